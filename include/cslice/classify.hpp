@@ -1,0 +1,42 @@
+// The direct placement test: the ground truth every faster structure is checked against.
+// Places the moving part and compares it with the fixed part curve by curve; no
+// precomputation beyond the pair itself, so it is simple enough to be obviously right.
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "cslice/pair.hpp"
+
+namespace cslice {
+
+enum class Placement { free, contact, blocked };
+
+std::string_view to_string(Placement p);
+
+// Blocked when the interiors of the placed moving part and the fixed part overlap (by more
+// than the geometric epsilon); contact when they do not overlap but come within the pair's
+// contact tolerance; free otherwise.
+Placement classify(const Pair& pair, const Pose& pose);
+
+// The same test with reusable scratch memory, for many queries on one pair.
+class PlacementTester {
+ public:
+  explicit PlacementTester(const Pair& pair);
+  Placement classify(const Pose& pose);
+  // Smallest distance between the placed boundaries (0 when they meet).
+  double boundary_distance(const Pose& pose);
+
+ private:
+  void place(const Pose& pose);
+  bool interiors_overlap();
+
+  const Pair& pair_;
+  std::vector<Curve> fixed_edges_;
+  std::vector<Curve> moving_edges_;  // placed copy, rebuilt per query
+  Box fixed_box_;
+  Box moving_box_;
+  Part moving_placed_;
+};
+
+}  // namespace cslice

@@ -1,0 +1,164 @@
+// Plane geometry of cslice: points, boxes and curves (line segments and circular arcs), with
+// one intersection and one distance routine per pair of curve kinds. Plain double
+// arithmetic; every comparison against zero goes through an epsilon the caller passes in
+// (from Tolerances), never a literal.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace cslice {
+
+inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kTwoPi = 2.0 * kPi;
+
+struct Vec2 {
+  double x = 0.0;
+  double y = 0.0;
+};
+
+inline Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+inline Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+inline Vec2 operator-(Vec2 a) { return {-a.x, -a.y}; }
+inline Vec2 operator*(double s, Vec2 a) { return {s * a.x, s * a.y}; }
+inline Vec2 operator*(Vec2 a, double s) { return {s * a.x, s * a.y}; }
+inline bool operator==(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
+inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+inline double length_squared(Vec2 a) { return dot(a, a); }
+inline double length(Vec2 a) { return std::hypot(a.x, a.y); }
+inline double distance(Vec2 a, Vec2 b) { return length(a - b); }
+inline Vec2 perp_left(Vec2 a) { return {-a.y, a.x}; }
+inline Vec2 perp_right(Vec2 a) { return {a.y, -a.x}; }
+inline Vec2 unit_vector(double angle) { return {std::cos(angle), std::sin(angle)}; }
+inline Vec2 normalized(Vec2 a) {
+  const double n = length(a);
+  return n > 0.0 ? Vec2{a.x / n, a.y / n} : Vec2{0.0, 0.0};
+}
+inline Vec2 lerp(Vec2 a, Vec2 b, double t) { return a + t * (b - a); }
+inline bool is_finite(Vec2 a) { return std::isfinite(a.x) && std::isfinite(a.y); }
+
+// A rotation by `angle` (radians, counterclockwise) followed by a translation: the placement
+// of a moving part at configuration (x, y, theta).
+struct Pose {
+  double x = 0.0;
+  double y = 0.0;
+  double theta = 0.0;
+};
+
+// Precomputed rotation, so a placed part costs one sin/cos pair, not one per point.
+struct Transform {
+  double c = 1.0, s = 0.0;
+  Vec2 offset;
+  explicit Transform(Pose p) : c(std::cos(p.theta)), s(std::sin(p.theta)), offset{p.x, p.y} {}
+  Transform() = default;
+  Vec2 rotate(Vec2 v) const { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
+  Vec2 apply(Vec2 p) const { return rotate(p) + offset; }
+};
+
+// Axis-aligned box; empty when lo > hi.
+struct Box {
+  Vec2 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  Vec2 hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  bool empty() const { return lo.x > hi.x || lo.y > hi.y; }
+  void add(Vec2 p);
+  void add(const Box& b);
+  Box inflated(double margin) const;
+  bool overlaps(const Box& b) const;
+  double diagonal() const { return empty() ? 0.0 : distance(lo, hi); }
+};
+
+// Wraps an angle into [-pi, pi).
+double wrap_angle(double a);
+
+// A boundary edge, directed from `from` to `to`: a line segment (bulge 0) or a circular arc
+// (bulge = tan(sweep / 4), positive counterclockwise). A full circle has from == to and
+// sweep = +-2pi. Parameter t in [0, 1] runs uniformly in arc length from `from` to `to`.
+struct Curve {
+  Vec2 from, to;
+  double bulge = 0.0;
+  // Arc data, meaningful only when is_arc().
+  Vec2 center;
+  double radius = 0.0;
+  double start_angle = 0.0;  // angle of `from` seen from the center
+  double sweep = 0.0;        // signed, in (-2pi, 2pi] (0 for segments)
+
+  bool is_arc() const { return sweep != 0.0; }
+  bool is_segment() const { return sweep == 0.0; }
+  bool is_full_circle() const { return std::fabs(sweep) >= kTwoPi; }
+  bool is_counterclockwise() const { return sweep > 0.0; }
+};
+
+Curve make_segment(Vec2 from, Vec2 to);
+// Arc from `from` to `to` with the given bulge; a zero bulge gives a segment.
+Curve make_bulge_arc(Vec2 from, Vec2 to, double bulge);
+// Arc of the circle (center, radius) from start_angle, turning by sweep (signed, |sweep| <= 2pi).
+Curve make_arc(Vec2 center, double radius, double start_angle, double sweep);
+// Full circle traversed counterclockwise (sweep = 2pi) or clockwise, starting at angle 0.
+Curve make_circle(Vec2 center, double radius, bool counterclockwise = true);
+
+Curve reversed(const Curve& c);
+Curve transformed(const Curve& c, const Transform& t);
+
+Vec2 point_at(const Curve& c, double t);
+// Unit tangent in the direction of travel at parameter t.
+Vec2 tangent_at(const Curve& c, double t);
+// Signed curvature: +1/r for counterclockwise arcs, -1/r for clockwise arcs, 0 for segments.
+double signed_curvature(const Curve& c);
+double curve_length(const Curve& c);
+Box bounding_box(const Curve& c);
+// Signed area between the curve and the origin: summing over a closed loop gives the area
+// it encloses (positive for counterclockwise loops).
+double signed_area_contribution(const Curve& c);
+
+// Parameter t of angle `a` on an arc, measured from start_angle in the sweep direction and
+// divided by |sweep|; values outside [0, 1] mean the angle is off the arc.
+double arc_parameter_of_angle(const Curve& arc, double a);
+// Parameter of the point of the curve nearest to p (clamped to [0, 1]).
+double closest_parameter(const Curve& c, Vec2 p);
+
+// ---- Intersections --------------------------------------------------------------------
+// One routine per pair of curve kinds; `intersect` picks the right one. All take eps (a
+// length): points closer than eps are the same, curves closer than eps touch.
+
+enum class IntersectionKind {
+  none,         // no common point
+  one,          // a single transversal crossing
+  two,          // two transversal crossings
+  tangent,      // touching without crossing (at least one hit is a tangency)
+  overlapping,  // the curves share a piece of positive length
+};
+
+// One common point, or one common piece (when is_piece) from (ta0, tb0) to (ta1, tb1).
+struct IntersectionHit {
+  Vec2 point;       // the point, or the piece's first end (at ta0)
+  Vec2 point_end;   // the piece's other end (at ta1); equals point when !is_piece
+  double ta0 = 0.0, ta1 = 0.0;
+  double tb0 = 0.0, tb1 = 0.0;
+  bool is_piece = false;
+  bool is_tangent = false;
+};
+
+struct Intersection {
+  IntersectionKind kind = IntersectionKind::none;
+  int count = 0;  // hits used in `hits`
+  std::array<IntersectionHit, 2> hits{};
+  // For overlapping curves: whether both travel the shared piece in the same direction.
+  bool same_direction = false;
+};
+
+Intersection intersect_segment_segment(const Curve& a, const Curve& b, double eps);
+Intersection intersect_segment_arc(const Curve& segment, const Curve& arc, double eps);
+Intersection intersect_arc_arc(const Curve& a, const Curve& b, double eps);
+Intersection intersect(const Curve& a, const Curve& b, double eps);
+
+// ---- Distances -------------------------------------------------------------------------
+double distance_to_curve(const Curve& c, Vec2 p);
+// Smallest distance between two curves (0 when they meet).
+double distance_segment_segment(const Curve& a, const Curve& b);
+double distance_segment_arc(const Curve& segment, const Curve& arc);
+double distance_arc_arc(const Curve& a, const Curve& b);
+double distance_between(const Curve& a, const Curve& b);
+
+}  // namespace cslice

@@ -1,0 +1,38 @@
+// Every tolerance cslice uses, named by purpose. All lengths derive from one base value: the
+// size of the pair (the diagonal of the bounding box of both parts, the moving part swept
+// through every orientation about its origin). Nothing else in the code base may invent an
+// epsilon; add it here with its unit and reason.
+#pragma once
+
+#include <optional>
+
+namespace cslice {
+
+// Relative round-off slack for lengths (dimensionless). Double arithmetic on coordinates of
+// magnitude `size` is accurate to about 1e-15 * size; chained constructions (rotation,
+// circle-circle intersection, square roots near tangency) lose up to half the digits, so
+// 1e-9 leaves a wide margin while staying far below any length a designer means.
+inline constexpr double kRelativeGeometricEpsilon = 1e-9;
+
+// Default accuracy the user gets when the pair file names no tolerance: 0.1% of the size.
+inline constexpr double kDefaultRelativeTolerance = 1e-3;
+
+struct Tolerances {
+  // Length unit of the pair file (mm, in, ...). Base value everything scales with.
+  double size = 1.0;
+  // Two points closer than this are the same point; a curve closer than this to a point
+  // passes through it; two curves this close are tangent or overlapping. Decides topology.
+  double geometric = kRelativeGeometricEpsilon;
+  // The user's accuracy: configurations within this distance of contact space may be
+  // reported as contact. Always >= geometric.
+  double contact = kDefaultRelativeTolerance;
+  // Angles closer than this are equal (radians): the geometric epsilon seen at unit lever
+  // arm of the pair's size, so that turning by it moves no point by more than `geometric`.
+  double angular = kRelativeGeometricEpsilon;
+};
+
+// Derives every tolerance from the pair's size and the user's tolerance (if any).
+// `size` must be positive and finite.
+Tolerances make_tolerances(double size, std::optional<double> user_tolerance = std::nullopt);
+
+}  // namespace cslice

@@ -1,0 +1,33 @@
+// Subcommands of the cslice program. Each lives in its own cmd_*.cpp and registers itself
+// on the CLI11 app; main.cpp only dispatches and turns errors into exit statuses.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "cslice/pair.hpp"
+
+namespace cslice::cli {
+
+// Exit statuses: 0 success, 1 a negative answer (e.g. no path), 2 bad input or usage.
+inline constexpr int kExitBadInput = 2;
+
+// Thrown by a command to stop with a message on standard error and the given status. A
+// command writes nothing to standard output before it has succeeded.
+struct ExitError : std::runtime_error {
+  int code;
+  ExitError(int exit_code, const std::string& message)
+      : std::runtime_error(message), code(exit_code) {}
+};
+
+// Loads a pair file or throws ExitError(2) with the reader's message.
+Pair load_pair_or_exit(const std::string& path);
+// Parses "x,y,theta" (theta in radians) or throws ExitError(2) naming `what`.
+Pose parse_pose_or_exit(const std::string& text, const std::string& what);
+
+void register_info(CLI::App& app);
+void register_classify(CLI::App& app);
+void register_render(CLI::App& app);
+
+}  // namespace cslice::cli

@@ -1,0 +1,28 @@
+// cslice: configuration spaces of planar parts bounded by segments and circular arcs.
+#include <iostream>
+
+#include "cli/commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "cslice: the configuration space of a rigid planar part moving amidst fixed obstacles,\n"
+      "both bounded by line segments and circular arcs."};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "cslice 0.1.0");
+  cslice::cli::register_info(app);
+  cslice::cli::register_classify(app);
+  cslice::cli::register_render(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : cslice::cli::kExitBadInput;
+  } catch (const cslice::cli::ExitError& e) {
+    std::cerr << "cslice: " << e.what() << "\n";
+    return e.code;
+  } catch (const std::exception& e) {
+    std::cerr << "cslice: internal error: " << e.what() << "\n";
+    return 3;
+  }
+  return 0;
+}
