@@ -30,13 +30,20 @@ class PlacementTester {
  private:
   void place(const Pose& pose);
   bool interiors_overlap();
+  bool boundaries_within(double distance_limit) const;
+  bool moving_contains(Vec2 p) const;
+  bool piece_inside_other(const Curve& edge, std::vector<double>& splits,
+                          bool edge_is_moving) const;
 
   const Pair& pair_;
   std::vector<Curve> fixed_edges_;
-  std::vector<Curve> moving_edges_;  // placed copy, rebuilt per query
-  Box fixed_box_;
+  std::vector<Box> fixed_boxes_;
+  std::vector<Curve> body_edges_;      // moving part in its body frame
+  std::vector<int> body_loop_starts_;  // first edge of each moving loop, plus the end
+  std::vector<Curve> moving_edges_;    // placed copy, rebuilt per query
+  std::vector<Box> moving_boxes_;
   Box moving_box_;
-  Part moving_placed_;
+  std::vector<std::vector<double>> moving_splits_, fixed_splits_;  // reused scratch
 };
 
 }  // namespace cslice

@@ -18,26 +18,58 @@ struct Vec2 {
   double y = 0.0;
 };
 
-inline Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
-inline Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
-inline Vec2 operator-(Vec2 a) { return {-a.x, -a.y}; }
-inline Vec2 operator*(double s, Vec2 a) { return {s * a.x, s * a.y}; }
-inline Vec2 operator*(Vec2 a, double s) { return {s * a.x, s * a.y}; }
-inline bool operator==(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
-inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
-inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-inline double length_squared(Vec2 a) { return dot(a, a); }
-inline double length(Vec2 a) { return std::hypot(a.x, a.y); }
-inline double distance(Vec2 a, Vec2 b) { return length(a - b); }
-inline Vec2 perp_left(Vec2 a) { return {-a.y, a.x}; }
-inline Vec2 perp_right(Vec2 a) { return {a.y, -a.x}; }
-inline Vec2 unit_vector(double angle) { return {std::cos(angle), std::sin(angle)}; }
+inline Vec2 operator+(Vec2 a, Vec2 b) {
+  return {a.x + b.x, a.y + b.y};
+}
+inline Vec2 operator-(Vec2 a, Vec2 b) {
+  return {a.x - b.x, a.y - b.y};
+}
+inline Vec2 operator-(Vec2 a) {
+  return {-a.x, -a.y};
+}
+inline Vec2 operator*(double s, Vec2 a) {
+  return {s * a.x, s * a.y};
+}
+inline Vec2 operator*(Vec2 a, double s) {
+  return {s * a.x, s * a.y};
+}
+inline bool operator==(Vec2 a, Vec2 b) {
+  return a.x == b.x && a.y == b.y;
+}
+inline double dot(Vec2 a, Vec2 b) {
+  return a.x * b.x + a.y * b.y;
+}
+inline double cross(Vec2 a, Vec2 b) {
+  return a.x * b.y - a.y * b.x;
+}
+inline double length_squared(Vec2 a) {
+  return dot(a, a);
+}
+inline double length(Vec2 a) {
+  return std::hypot(a.x, a.y);
+}
+inline double distance(Vec2 a, Vec2 b) {
+  return length(a - b);
+}
+inline Vec2 perp_left(Vec2 a) {
+  return {-a.y, a.x};
+}
+inline Vec2 perp_right(Vec2 a) {
+  return {a.y, -a.x};
+}
+inline Vec2 unit_vector(double angle) {
+  return {std::cos(angle), std::sin(angle)};
+}
 inline Vec2 normalized(Vec2 a) {
   const double n = length(a);
   return n > 0.0 ? Vec2{a.x / n, a.y / n} : Vec2{0.0, 0.0};
 }
-inline Vec2 lerp(Vec2 a, Vec2 b, double t) { return a + t * (b - a); }
-inline bool is_finite(Vec2 a) { return std::isfinite(a.x) && std::isfinite(a.y); }
+inline Vec2 lerp(Vec2 a, Vec2 b, double t) {
+  return a + t * (b - a);
+}
+inline bool is_finite(Vec2 a) {
+  return std::isfinite(a.x) && std::isfinite(a.y);
+}
 
 // A rotation by `angle` (radians, counterclockwise) followed by a translation: the placement
 // of a moving part at configuration (x, y, theta).
@@ -51,7 +83,9 @@ struct Pose {
 struct Transform {
   double c = 1.0, s = 0.0;
   Vec2 offset;
-  explicit Transform(Pose p) : c(std::cos(p.theta)), s(std::sin(p.theta)), offset{p.x, p.y} {}
+  double angle = 0.0;
+  explicit Transform(Pose p)
+      : c(std::cos(p.theta)), s(std::sin(p.theta)), offset{p.x, p.y}, angle(p.theta) {}
   Transform() = default;
   Vec2 rotate(Vec2 v) const { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
   Vec2 apply(Vec2 p) const { return rotate(p) + offset; }
@@ -132,8 +166,8 @@ enum class IntersectionKind {
 
 // One common point, or one common piece (when is_piece) from (ta0, tb0) to (ta1, tb1).
 struct IntersectionHit {
-  Vec2 point;       // the point, or the piece's first end (at ta0)
-  Vec2 point_end;   // the piece's other end (at ta1); equals point when !is_piece
+  Vec2 point;      // the point, or the piece's first end (at ta0)
+  Vec2 point_end;  // the piece's other end (at ta1); equals point when !is_piece
   double ta0 = 0.0, ta1 = 0.0;
   double tb0 = 0.0, tb1 = 0.0;
   bool is_piece = false;

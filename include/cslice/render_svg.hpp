@@ -8,10 +8,10 @@
 namespace cslice {
 
 struct SvgOptions {
-  double width_px = 800.0;       // drawing width; height follows the aspect ratio
+  double width_px = 800.0;  // drawing width; height follows the aspect ratio
   bool show_scale_bar = true;
   bool show_reference_point = true;
-  std::string title;             // optional caption drawn at the top
+  std::string title;  // optional caption drawn at the top
 };
 
 // The fixed part shaded, the moving part placed at `pose`, its reference point marked, arcs

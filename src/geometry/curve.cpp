@@ -1,0 +1,169 @@
+// Construction and evaluation of segments and circular arcs.
+#include <algorithm>
+
+#include "cslice/geometry.hpp"
+
+namespace cslice {
+
+void Box::add(Vec2 p) {
+  lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+  hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+}
+
+void Box::add(const Box& b) {
+  if (b.empty()) return;
+  add(b.lo);
+  add(b.hi);
+}
+
+Box Box::inflated(double margin) const {
+  if (empty()) return *this;
+  Box b;
+  b.lo = {lo.x - margin, lo.y - margin};
+  b.hi = {hi.x + margin, hi.y + margin};
+  return b;
+}
+
+bool Box::overlaps(const Box& b) const {
+  return !(b.lo.x > hi.x || b.hi.x < lo.x || b.lo.y > hi.y || b.hi.y < lo.y);
+}
+
+double wrap_angle(double a) {
+  a = std::fmod(a + kPi, kTwoPi);
+  if (a < 0.0) a += kTwoPi;
+  return a - kPi;
+}
+
+Curve make_segment(Vec2 from, Vec2 to) {
+  Curve c;
+  c.from = from;
+  c.to = to;
+  return c;
+}
+
+// The bulge gives the centre without trigonometry: with b = tan(sweep/4), the centre lies
+// at distance d(1 - b^2)/(4b) to the left of the chord's midpoint (negative: to the right)
+// and the radius is d(1 + b^2)/(4|b|), d the chord length.
+Curve make_bulge_arc(Vec2 from, Vec2 to, double bulge) {
+  if (bulge == 0.0) return make_segment(from, to);
+  Curve c;
+  c.from = from;
+  c.to = to;
+  c.bulge = bulge;
+  const Vec2 chord = to - from;
+  const double d = length(chord);
+  const double b2 = bulge * bulge;
+  const double offset = d * (1.0 - b2) / (4.0 * bulge);
+  c.center = lerp(from, to, 0.5) + offset * perp_left(normalized(chord));
+  c.radius = d * (1.0 + b2) / (4.0 * std::fabs(bulge));
+  c.sweep = 4.0 * std::atan(bulge);
+  c.start_angle = std::atan2(from.y - c.center.y, from.x - c.center.x);
+  return c;
+}
+
+Curve make_arc(Vec2 center, double radius, double start_angle, double sweep) {
+  Curve c;
+  c.center = center;
+  c.radius = radius;
+  c.start_angle = start_angle;
+  c.sweep = std::clamp(sweep, -kTwoPi, kTwoPi);
+  c.from = center + radius * unit_vector(start_angle);
+  c.to = c.is_full_circle() ? c.from : center + radius * unit_vector(start_angle + c.sweep);
+  c.bulge = c.is_full_circle() ? std::numeric_limits<double>::infinity() : std::tan(c.sweep / 4.0);
+  return c;
+}
+
+Curve make_circle(Vec2 center, double radius, bool counterclockwise) {
+  return make_arc(center, radius, 0.0, counterclockwise ? kTwoPi : -kTwoPi);
+}
+
+Curve reversed(const Curve& c) {
+  if (c.is_segment()) return make_segment(c.to, c.from);
+  Curve r = c;
+  std::swap(r.from, r.to);
+  r.start_angle = c.start_angle + c.sweep;
+  r.sweep = -c.sweep;
+  r.bulge = -c.bulge;
+  return r;
+}
+
+Curve transformed(const Curve& c, const Transform& t) {
+  Curve r = c;
+  r.from = t.apply(c.from);
+  r.to = t.apply(c.to);
+  if (c.is_arc()) {
+    r.center = t.apply(c.center);
+    r.start_angle = c.start_angle + t.angle;
+  }
+  return r;
+}
+
+Vec2 point_at(const Curve& c, double t) {
+  if (t == 0.0) return c.from;
+  if (t == 1.0) return c.to;
+  if (c.is_segment()) return lerp(c.from, c.to, t);
+  return c.center + c.radius * unit_vector(c.start_angle + t * c.sweep);
+}
+
+Vec2 tangent_at(const Curve& c, double t) {
+  if (c.is_segment()) return normalized(c.to - c.from);
+  const Vec2 radial = unit_vector(c.start_angle + t * c.sweep);
+  return c.sweep > 0.0 ? perp_left(radial) : perp_right(radial);
+}
+
+double signed_curvature(const Curve& c) {
+  if (c.is_segment()) return 0.0;
+  return c.sweep > 0.0 ? 1.0 / c.radius : -1.0 / c.radius;
+}
+
+double curve_length(const Curve& c) {
+  return c.is_segment() ? distance(c.from, c.to) : c.radius * std::fabs(c.sweep);
+}
+
+double arc_parameter_of_angle(const Curve& arc, double a) {
+  const double span = std::fabs(arc.sweep);
+  double delta = arc.sweep > 0.0 ? a - arc.start_angle : arc.start_angle - a;
+  delta = std::fmod(delta, kTwoPi);
+  if (delta < 0.0) delta += kTwoPi;
+  // Off the arc, report the angle beyond whichever end is nearer, so that callers can
+  // accept points a tolerance outside either end.
+  if (delta > span && delta - span > kTwoPi - delta) delta -= kTwoPi;
+  return delta / span;
+}
+
+Box bounding_box(const Curve& c) {
+  Box b;
+  b.add(c.from);
+  b.add(c.to);
+  if (c.is_segment()) return b;
+  for (int k = 0; k < 4; ++k) {
+    const double axis_angle = k * (kPi / 2.0);
+    const double t = arc_parameter_of_angle(c, axis_angle);
+    if (t >= 0.0 && t <= 1.0) b.add(c.center + c.radius * unit_vector(axis_angle));
+  }
+  return b;
+}
+
+// Chord term plus the circular segment between chord and arc: r^2 (sweep - sin sweep) / 2,
+// signed by the sweep, so a loop's sum is its enclosed area without polygonising arcs.
+double signed_area_contribution(const Curve& c) {
+  double a = 0.5 * cross(c.from, c.to);
+  if (c.is_arc()) a += 0.5 * c.radius * c.radius * (c.sweep - std::sin(c.sweep));
+  return a;
+}
+
+double closest_parameter(const Curve& c, Vec2 p) {
+  if (c.is_segment()) {
+    const Vec2 d = c.to - c.from;
+    const double len2 = length_squared(d);
+    if (len2 == 0.0) return 0.0;
+    return std::clamp(dot(p - c.from, d) / len2, 0.0, 1.0);
+  }
+  const Vec2 r = p - c.center;
+  if (r.x == 0.0 && r.y == 0.0) return 0.0;  // every point of the arc is nearest
+  const double t = arc_parameter_of_angle(c, std::atan2(r.y, r.x));
+  if (t >= 0.0 && t <= 1.0) return t;
+  return distance(p, c.from) <= distance(p, c.to) ? 0.0 : 1.0;
+}
+
+}  // namespace cslice

@@ -1,0 +1,85 @@
+// Distances between points, segments and circular arcs.
+//
+// Between two curves that do not meet, the smallest distance is attained either at an
+// endpoint of one of them or at a pair of interior points joined by a common normal. Each
+// routine evaluates exactly those candidates, so it is exact up to round-off; curves that
+// meet (found by the intersection routine with no tolerance) are at distance 0.
+#include <algorithm>
+
+#include "cslice/geometry.hpp"
+
+namespace cslice {
+namespace {
+
+bool on_arc(const Curve& arc, Vec2 p) {
+  const double t = arc_parameter_of_angle(arc, std::atan2(p.y - arc.center.y, p.x - arc.center.x));
+  return t >= 0.0 && t <= 1.0;
+}
+
+double endpoint_candidates(const Curve& a, const Curve& b) {
+  return std::min({distance_to_curve(b, a.from), distance_to_curve(b, a.to),
+                   distance_to_curve(a, b.from), distance_to_curve(a, b.to)});
+}
+
+}  // namespace
+
+double distance_to_curve(const Curve& c, Vec2 p) {
+  if (c.is_segment()) return distance(p, point_at(c, closest_parameter(c, p)));
+  const Vec2 r = p - c.center;
+  const double rho = length(r);
+  if (rho == 0.0) return c.radius;
+  if (on_arc(c, p)) return std::fabs(rho - c.radius);
+  return std::min(distance(p, c.from), distance(p, c.to));
+}
+
+// Segments meet when each one's endpoints are not strictly on one side of the other.
+double distance_segment_segment(const Curve& a, const Curve& b) {
+  const Vec2 da = a.to - a.from, db = b.to - b.from;
+  const double s1 = cross(da, b.from - a.from), s2 = cross(da, b.to - a.from);
+  const double s3 = cross(db, a.from - b.from), s4 = cross(db, a.to - b.from);
+  const bool straddle_a = (s1 <= 0.0 && s2 >= 0.0) || (s1 >= 0.0 && s2 <= 0.0);
+  const bool straddle_b = (s3 <= 0.0 && s4 >= 0.0) || (s3 >= 0.0 && s4 <= 0.0);
+  const bool collinear = s1 == 0.0 && s2 == 0.0;
+  if (straddle_a && straddle_b && !collinear) return 0.0;
+  return endpoint_candidates(a, b);
+}
+
+// Common normals of a segment and a circle pass through the centre perpendicular to the
+// segment, meeting the circle at c +- r n.
+double distance_segment_arc(const Curve& segment, const Curve& arc) {
+  if (intersect_segment_arc(segment, arc, 0.0).count > 0) return 0.0;
+  double best = endpoint_candidates(segment, arc);
+  const Vec2 n = perp_left(normalized(segment.to - segment.from));
+  for (double sign : {-1.0, 1.0}) {
+    const Vec2 p = arc.center + (sign * arc.radius) * n;
+    if (on_arc(arc, p)) best = std::min(best, distance_to_curve(segment, p));
+  }
+  return best;
+}
+
+// Common normals of two circles lie on the line of centres. Concentric arcs have common
+// normals everywhere; their nearest points then include an endpoint of one of them.
+double distance_arc_arc(const Curve& a, const Curve& b) {
+  if (intersect_arc_arc(a, b, 0.0).count > 0) return 0.0;
+  double best = endpoint_candidates(a, b);
+  const Vec2 cc = b.center - a.center;
+  if (cc.x == 0.0 && cc.y == 0.0) return best;
+  const Vec2 u = normalized(cc);
+  for (double sa : {-1.0, 1.0}) {
+    const Vec2 pa = a.center + (sa * a.radius) * u;
+    if (!on_arc(a, pa)) continue;
+    for (double sb : {-1.0, 1.0}) {
+      const Vec2 pb = b.center + (sb * b.radius) * u;
+      if (on_arc(b, pb)) best = std::min(best, distance(pa, pb));
+    }
+  }
+  return best;
+}
+
+double distance_between(const Curve& a, const Curve& b) {
+  if (a.is_segment() && b.is_segment()) return distance_segment_segment(a, b);
+  if (a.is_arc() && b.is_arc()) return distance_arc_arc(a, b);
+  return a.is_segment() ? distance_segment_arc(a, b) : distance_segment_arc(b, a);
+}
+
+}  // namespace cslice

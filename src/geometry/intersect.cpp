@@ -1,0 +1,267 @@
+// Intersections of segments and circular arcs, one routine per pair of curve kinds.
+//
+// Every routine takes eps, a length: points within eps are one point, a curve within eps of a
+// point passes through it. Hits carry parameters on both curves (t in [0, 1] along each) and
+// are snapped into [0, 1]. Near-degenerate configurations are decided in a fixed order:
+// overlap first (collinear or co-circular within eps), then tangency (distance between the
+// carriers within eps of touching), then transversal crossings; finally an endpoint of
+// either curve within eps of the other becomes a hit if no hit is already there, so that a
+// crossing lost to round-off near an endpoint is never dropped.
+#include <algorithm>
+
+#include "cslice/geometry.hpp"
+
+namespace cslice {
+namespace {
+
+void add_hit(Intersection& r, const IntersectionHit& h, double eps) {
+  for (int i = 0; i < r.count; ++i) {
+    const IntersectionHit& o = r.hits[i];
+    if (o.is_piece) {
+      // A point on a shared piece adds nothing.
+      const double ta_lo = std::min(o.ta0, o.ta1), ta_hi = std::max(o.ta0, o.ta1);
+      if (h.ta0 >= ta_lo && h.ta0 <= ta_hi) return;
+      if (distance(o.point, h.point) <= eps || distance(o.point_end, h.point) <= eps) return;
+    } else if (distance(o.point, h.point) <= eps) {
+      return;
+    }
+  }
+  if (r.count < 2) r.hits[r.count++] = h;
+}
+
+IntersectionHit point_hit(Vec2 p, double ta, double tb, bool tangent) {
+  IntersectionHit h;
+  h.point = h.point_end = p;
+  h.ta0 = h.ta1 = std::clamp(ta, 0.0, 1.0);
+  h.tb0 = h.tb1 = std::clamp(tb, 0.0, 1.0);
+  h.is_tangent = tangent;
+  return h;
+}
+
+void finish_kind(Intersection& r) {
+  if (r.count == 0) {
+    r.kind = IntersectionKind::none;
+    return;
+  }
+  bool piece = false, tangent = false;
+  for (int i = 0; i < r.count; ++i) {
+    piece = piece || r.hits[i].is_piece;
+    tangent = tangent || r.hits[i].is_tangent;
+  }
+  if (piece)
+    r.kind = IntersectionKind::overlapping;
+  else if (tangent)
+    r.kind = IntersectionKind::tangent;
+  else
+    r.kind = r.count == 1 ? IntersectionKind::one : IntersectionKind::two;
+}
+
+// Adds endpoint touches that the closed-form solution may have lost to round-off.
+void add_endpoint_touches(Intersection& r, const Curve& a, const Curve& b, double eps) {
+  for (double ta : {0.0, 1.0}) {
+    const Vec2 p = point_at(a, ta);
+    if (distance_to_curve(b, p) <= eps)
+      add_hit(r, point_hit(p, ta, closest_parameter(b, p), false), eps);
+  }
+  for (double tb : {0.0, 1.0}) {
+    const Vec2 p = point_at(b, tb);
+    if (distance_to_curve(a, p) <= eps)
+      add_hit(r, point_hit(p, closest_parameter(a, p), tb, false), eps);
+  }
+}
+
+// Parameter on an arc for a point known to lie on its circle, or NaN when it is more than
+// eps (in length) beyond either end.
+double arc_parameter_within(const Curve& arc, Vec2 p, double eps) {
+  const double t = arc_parameter_of_angle(arc, std::atan2(p.y - arc.center.y, p.x - arc.center.x));
+  const double slack = arc.radius * std::fabs(arc.sweep) > 0.0 ? eps / curve_length(arc) : 0.0;
+  if (t < -slack || t > 1.0 + slack) return std::numeric_limits<double>::quiet_NaN();
+  return std::clamp(t, 0.0, 1.0);
+}
+
+double segment_parameter_within(const Curve& s, Vec2 p, double eps) {
+  const Vec2 d = s.to - s.from;
+  const double len2 = length_squared(d);
+  const double t = dot(p - s.from, d) / len2;
+  const double slack = eps / std::sqrt(len2);
+  if (t < -slack || t > 1.0 + slack) return std::numeric_limits<double>::quiet_NaN();
+  return std::clamp(t, 0.0, 1.0);
+}
+
+// Collinear segments (both within eps of one carrier line): the shared piece, or a single
+// touching point when the shared part is shorter than eps.
+void collinear_overlap(Intersection& r, const Curve& a, const Curve& b, double eps) {
+  const Vec2 d = a.to - a.from;
+  const double len2 = length_squared(d);
+  const double s0 = dot(b.from - a.from, d) / len2, s1 = dot(b.to - a.from, d) / len2;
+  const double lo = std::max(0.0, std::min(s0, s1)), hi = std::min(1.0, std::max(s0, s1));
+  const double len = std::sqrt(len2);
+  r.same_direction = s1 > s0;
+  if ((hi - lo) * len < -eps) return;
+  if ((hi - lo) * len <= eps) {
+    const Vec2 p = lerp(a.from, a.to, 0.5 * (lo + hi));
+    add_hit(r, point_hit(p, 0.5 * (lo + hi), closest_parameter(b, p), true), eps);
+    return;
+  }
+  IntersectionHit h;
+  h.is_piece = true;
+  h.ta0 = lo;
+  h.ta1 = hi;
+  h.point = lerp(a.from, a.to, lo);
+  h.point_end = lerp(a.from, a.to, hi);
+  h.tb0 = closest_parameter(b, h.point);
+  h.tb1 = closest_parameter(b, h.point_end);
+  r.hits[r.count++] = h;
+}
+
+// Shared pieces of two arcs of one circle, found on the counterclockwise angle axis.
+void cocircular_overlap(Intersection& r, const Curve& a, const Curve& b, double eps) {
+  r.same_direction = (a.sweep > 0.0) == (b.sweep > 0.0);
+  const double ccw_start_a = a.sweep > 0.0 ? a.start_angle : a.start_angle + a.sweep;
+  const double ccw_start_b = b.sweep > 0.0 ? b.start_angle : b.start_angle + b.sweep;
+  const double span_a = std::fabs(a.sweep), span_b = std::fabs(b.sweep);
+  const double angular_eps = eps / a.radius;
+  double offset = std::fmod(ccw_start_b - ccw_start_a, kTwoPi);
+  if (offset < 0.0) offset += kTwoPi;
+  // b's interval, relative to a's start, may wrap: consider it and its copy one turn earlier.
+  for (double shift : {offset - kTwoPi, offset}) {
+    const double lo = std::max(0.0, shift), hi = std::min(span_a, shift + span_b);
+    if (hi - lo < -angular_eps) continue;
+    const double mid = 0.5 * (lo + hi);
+    if (hi - lo <= angular_eps) {
+      const Vec2 p = a.center + a.radius * unit_vector(ccw_start_a + mid);
+      add_hit(r, point_hit(p, closest_parameter(a, p), closest_parameter(b, p), true), eps);
+      continue;
+    }
+    IntersectionHit h;
+    h.is_piece = true;
+    const Vec2 p_lo = a.center + a.radius * unit_vector(ccw_start_a + lo);
+    const Vec2 p_hi = a.center + a.radius * unit_vector(ccw_start_a + hi);
+    const bool a_ccw = a.sweep > 0.0;
+    h.point = a_ccw ? p_lo : p_hi;
+    h.point_end = a_ccw ? p_hi : p_lo;
+    h.ta0 = a_ccw ? lo / span_a : 1.0 - hi / span_a;
+    h.ta1 = a_ccw ? hi / span_a : 1.0 - lo / span_a;
+    h.tb0 = closest_parameter(b, h.point);
+    h.tb1 = closest_parameter(b, h.point_end);
+    if (r.count < 2) r.hits[r.count++] = h;
+  }
+}
+
+}  // namespace
+
+// Segment a(t) = a.from + t (a.to - a.from) against b(u) likewise. Parallel carriers within
+// eps overlap (a piece, or a tangent point when they only touch end to end); otherwise the
+// unique crossing of the carriers counts when it lies within eps of both segments.
+Intersection intersect_segment_segment(const Curve& a, const Curve& b, double eps) {
+  Intersection r;
+  const Vec2 da = a.to - a.from, db = b.to - b.from;
+  const double la = length(da), lb = length(db);
+  const double b_off_a =
+      std::max(std::fabs(cross(da, b.from - a.from)), std::fabs(cross(da, b.to - a.from))) / la;
+  const double a_off_b =
+      std::max(std::fabs(cross(db, a.from - b.from)), std::fabs(cross(db, a.to - b.from))) / lb;
+  if (b_off_a <= eps || a_off_b <= eps) {
+    collinear_overlap(r, a, b, eps);
+  } else {
+    const double denom = cross(da, db);
+    if (denom != 0.0) {
+      const Vec2 w = b.from - a.from;
+      const double t = cross(w, db) / denom, u = cross(w, da) / denom;
+      if (t >= -eps / la && t <= 1.0 + eps / la && u >= -eps / lb && u <= 1.0 + eps / lb) {
+        const double tc = std::clamp(t, 0.0, 1.0);
+        add_hit(r, point_hit(lerp(a.from, a.to, tc), tc, std::clamp(u, 0.0, 1.0), false), eps);
+      }
+    }
+    add_endpoint_touches(r, a, b, eps);
+  }
+  finish_kind(r);
+  return r;
+}
+
+// Segment s(t) against the circle of the arc: the foot q of the centre on the carrier line
+// at distance h; |h| within eps of the radius is a tangency at q, |h| < r gives the two
+// points q +- sqrt(r^2 - h^2) along the line. Each point counts when within eps of both.
+Intersection intersect_segment_arc(const Curve& s, const Curve& arc, double eps) {
+  Intersection r;
+  const Vec2 d = s.to - s.from;
+  const double len = length(d);
+  const Vec2 dir = (1.0 / len) * d;
+  const double t0 = dot(arc.center - s.from, dir);
+  const Vec2 q = s.from + t0 * dir;
+  const double h = distance(q, arc.center);
+  if (h <= arc.radius + eps) {
+    if (h >= arc.radius - eps) {
+      const Vec2 p = h > 0.0 ? arc.center + (arc.radius / h) * (q - arc.center) : q;
+      const double ts = segment_parameter_within(s, p, eps), ta = arc_parameter_within(arc, p, eps);
+      if (!std::isnan(ts) && !std::isnan(ta)) add_hit(r, point_hit(p, ts, ta, true), eps);
+    } else {
+      const double k = std::sqrt(arc.radius * arc.radius - h * h);
+      for (double sign : {-1.0, 1.0}) {
+        const Vec2 p = q + (sign * k) * dir;
+        const double ts = segment_parameter_within(s, p, eps),
+                     ta = arc_parameter_within(arc, p, eps);
+        if (!std::isnan(ts) && !std::isnan(ta)) add_hit(r, point_hit(p, ts, ta, false), eps);
+      }
+    }
+    add_endpoint_touches(r, s, arc, eps);
+  }
+  finish_kind(r);
+  return r;
+}
+
+// Arcs on circles (c1, r1) and (c2, r2) at centre distance d. Concentric within eps: equal
+// radii overlap (pieces or touching ends), others never meet. Otherwise d within eps of
+// r1 + r2 or |r1 - r2| is a tangency on the centre line; in between, the two points
+// c1 + a u +- h perp(u) with a = (d^2 + r1^2 - r2^2) / 2d, h = sqrt(r1^2 - a^2).
+Intersection intersect_arc_arc(const Curve& a, const Curve& b, double eps) {
+  Intersection r;
+  const Vec2 cc = b.center - a.center;
+  const double d = length(cc);
+  const double r1 = a.radius, r2 = b.radius;
+  if (d <= eps) {
+    if (std::fabs(r1 - r2) <= eps) cocircular_overlap(r, a, b, eps);
+  } else if (d <= r1 + r2 + eps && d >= std::fabs(r1 - r2) - eps) {
+    const Vec2 u = (1.0 / d) * cc;
+    std::array<Vec2, 2> points;
+    int n = 0;
+    bool tangent = false;
+    if (d >= r1 + r2 - eps) {
+      points[n++] = a.center + (r1 + 0.5 * (d - r1 - r2)) * u;
+      tangent = true;
+    } else if (d <= std::fabs(r1 - r2) + eps) {
+      const double side = r1 >= r2 ? 1.0 : -1.0;
+      points[n++] = a.center + (side * r1) * u;
+      tangent = true;
+    } else {
+      const double along = (d * d + r1 * r1 - r2 * r2) / (2.0 * d);
+      const double h = std::sqrt(std::max(0.0, r1 * r1 - along * along));
+      points[n++] = a.center + along * u + h * perp_left(u);
+      points[n++] = a.center + along * u - h * perp_left(u);
+    }
+    for (int i = 0; i < n; ++i) {
+      const double ta = arc_parameter_within(a, points[i], eps);
+      const double tb = arc_parameter_within(b, points[i], eps);
+      if (!std::isnan(ta) && !std::isnan(tb))
+        add_hit(r, point_hit(points[i], ta, tb, tangent), eps);
+    }
+    add_endpoint_touches(r, a, b, eps);
+  }
+  finish_kind(r);
+  return r;
+}
+
+Intersection intersect(const Curve& a, const Curve& b, double eps) {
+  if (a.is_segment() && b.is_segment()) return intersect_segment_segment(a, b, eps);
+  if (a.is_arc() && b.is_arc()) return intersect_arc_arc(a, b, eps);
+  if (a.is_segment()) return intersect_segment_arc(a, b, eps);
+  // Arc first: solve with the roles swapped, then swap the parameters back.
+  Intersection r = intersect_segment_arc(b, a, eps);
+  for (int i = 0; i < r.count; ++i) {
+    std::swap(r.hits[i].ta0, r.hits[i].tb0);
+    std::swap(r.hits[i].ta1, r.hits[i].tb1);
+  }
+  return r;
+}
+
+}  // namespace cslice

@@ -1,0 +1,95 @@
+// Point queries on loops and parts, and placing a part at a pose.
+#include <algorithm>
+
+#include "cslice/part.hpp"
+#include "parts/loop_queries.hpp"
+
+namespace cslice {
+namespace {
+
+// Even-odd crossing of a rightward ray from p with the chord from a to b, half-open in y so
+// a ray through a vertex counts it once.
+bool ray_crosses_chord(Vec2 a, Vec2 b, Vec2 p) {
+  if ((a.y > p.y) == (b.y > p.y)) return false;
+  const double x_at = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+  return p.x < x_at;
+}
+
+// The region between an arc and its chord: the arc's disc cut by the chord's line, on the
+// side where the arc runs (right of the chord for counterclockwise arcs).
+bool in_circular_segment(const Curve& arc, Vec2 p) {
+  if (length_squared(p - arc.center) >= arc.radius * arc.radius) return false;
+  const double side = cross(arc.to - arc.from, p - arc.from);
+  return arc.sweep > 0.0 ? side < 0.0 : side > 0.0;
+}
+
+}  // namespace
+
+double loop_signed_area(std::span<const Curve> edges) {
+  double area = 0.0;
+  for (const Curve& c : edges) area += signed_area_contribution(c);
+  return area;
+}
+
+// The region bounded by chords and arcs is the chord polygon with every arc's circular
+// segment toggled in or out, so parity of (chord crossings + segments containing p) decides.
+bool loop_encloses(std::span<const Curve> edges, Vec2 p) {
+  if (edges.size() == 1 && edges.front().is_full_circle()) {
+    const Curve& c = edges.front();
+    return length_squared(p - c.center) < c.radius * c.radius;
+  }
+  bool inside = false;
+  for (const Curve& c : edges) {
+    if (ray_crosses_chord(c.from, c.to, p)) inside = !inside;
+    if (c.is_arc() && in_circular_segment(c, p)) inside = !inside;
+  }
+  return inside;
+}
+
+double distance_to_curves(std::span<const Curve> edges, Vec2 p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Curve& c : edges) best = std::min(best, distance_to_curve(c, p));
+  return best;
+}
+
+bool contains_point(const Part& part, Vec2 p) {
+  if (!part.enclosure && !part.box.empty()) {
+    if (p.x < part.box.lo.x || p.x > part.box.hi.x || p.y < part.box.lo.y || p.y > part.box.hi.y)
+      return false;
+  }
+  bool inside = false;
+  for (const Loop& loop : part.loops)
+    if (loop_encloses(loop.edges, p)) inside = !inside;
+  return inside != part.enclosure;
+}
+
+double distance_to_boundary(const Part& part, Vec2 p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Loop& loop : part.loops) best = std::min(best, distance_to_curves(loop.edges, p));
+  return best;
+}
+
+Part placed(const Part& part, const Pose& pose) {
+  const Transform t(pose);
+  Part out = part;
+  out.box = Box{};
+  for (Loop& loop : out.loops) {
+    for (Curve& c : loop.edges) {
+      c = transformed(c, t);
+      out.box.add(bounding_box(c));
+    }
+  }
+  for (Feature& f : out.features) {
+    f.normal_in = t.rotate(f.normal_in);
+    f.normal_out = t.rotate(f.normal_out);
+    f.point = t.apply(f.point);
+  }
+  return out;
+}
+
+const Curve& edge_of(const Part& part, const Feature& f) {
+  const Loop& loop = part.loops[f.loop];
+  return loop.edges[f.index % loop.edges.size()];
+}
+
+}  // namespace cslice

@@ -1,0 +1,264 @@
+// Curves, intersections and distances: each intersection kind on each curve pair, the
+// degenerate cases (parallel overlap, co-circular arcs, tangency, endpoint touches), and
+// cross-checks of distances against dense sampling.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "cslice/geometry.hpp"
+#include "parts/loop_queries.hpp"
+
+using namespace cslice;
+
+namespace {
+
+constexpr double kEps = 1e-9;
+
+Curve arc_deg(Vec2 c, double r, double start_deg, double sweep_deg) {
+  return make_arc(c, r, start_deg * kPi / 180.0, sweep_deg * kPi / 180.0);
+}
+
+// Smallest distance between two curves by sampling both densely (an independent estimate).
+double sampled_distance(const Curve& a, const Curve& b, int n = 2000) {
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= n; ++i)
+    best = std::min(best, distance_to_curve(b, point_at(a, double(i) / n)));
+  for (int i = 0; i <= n; ++i)
+    best = std::min(best, distance_to_curve(a, point_at(b, double(i) / n)));
+  return best;
+}
+
+}  // namespace
+
+TEST(Curve, BulgeArcHalfCircle) {
+  const Curve c = make_bulge_arc({1, 0}, {-1, 0}, 1.0);
+  EXPECT_NEAR(c.radius, 1.0, 1e-15);
+  EXPECT_NEAR(c.center.x, 0.0, 1e-15);
+  EXPECT_NEAR(c.center.y, 0.0, 1e-15);
+  EXPECT_NEAR(c.sweep, kPi, 1e-15);
+  const Vec2 mid = point_at(c, 0.5);
+  EXPECT_NEAR(mid.x, 0.0, 1e-12);
+  EXPECT_NEAR(mid.y, 1.0, 1e-12);  // counterclockwise from (1,0) passes through the top
+  EXPECT_NEAR(curve_length(c), kPi, 1e-12);
+}
+
+TEST(Curve, BulgeArcClockwiseQuarter) {
+  const double b = std::tan(-kPi / 8.0);  // quarter circle, clockwise
+  const Curve c = make_bulge_arc({0, 1}, {1, 0}, b);
+  EXPECT_NEAR(c.center.x, 0.0, 1e-12);
+  EXPECT_NEAR(c.center.y, 0.0, 1e-12);
+  EXPECT_NEAR(c.radius, 1.0, 1e-12);
+  EXPECT_LT(c.sweep, 0.0);
+  const Vec2 mid = point_at(c, 0.5);
+  EXPECT_NEAR(mid.x, std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(mid.y, std::sqrt(0.5), 1e-12);
+}
+
+TEST(Curve, BoundingBoxIncludesAxisExtremes) {
+  const Box b = bounding_box(make_bulge_arc({1, 0}, {-1, 0}, 1.0));
+  EXPECT_NEAR(b.hi.y, 1.0, 1e-12);
+  EXPECT_NEAR(b.lo.y, 0.0, 1e-12);
+  EXPECT_NEAR(b.lo.x, -1.0, 1e-12);
+  EXPECT_NEAR(b.hi.x, 1.0, 1e-12);
+}
+
+TEST(Curve, ReversedAndTransformedKeepTheSamePoints) {
+  const Curve c = arc_deg({1, 2}, 3, 10, 250);
+  const Curve r = reversed(c);
+  for (double t : {0.0, 0.3, 0.8, 1.0}) {
+    EXPECT_NEAR(distance(point_at(c, t), point_at(r, 1.0 - t)), 0.0, 1e-12);
+  }
+  const Transform tf(Pose{5, -1, 0.7});
+  const Curve m = transformed(c, tf);
+  for (double t : {0.0, 0.4, 1.0})
+    EXPECT_NEAR(distance(tf.apply(point_at(c, t)), point_at(m, t)), 0.0, 1e-12);
+}
+
+TEST(Area, LoopsWithArcs) {
+  // Unit disc from two half circles; square with a half-disc bump on its top edge.
+  const Curve disc[] = {make_bulge_arc({1, 0}, {-1, 0}, 1), make_bulge_arc({-1, 0}, {1, 0}, 1)};
+  EXPECT_NEAR(loop_signed_area(disc), kPi, 1e-12);
+  const Curve bump[] = {make_segment({0, 0}, {2, 0}), make_segment({2, 0}, {2, 2}),
+                        make_bulge_arc({2, 2}, {0, 2}, 1), make_segment({0, 2}, {0, 0})};
+  EXPECT_NEAR(loop_signed_area(bump), 4.0 + kPi / 2.0, 1e-12);
+  const Curve circle[] = {make_circle({3, 3}, 2, false)};
+  EXPECT_NEAR(loop_signed_area(circle), -4.0 * kPi, 1e-12);
+}
+
+TEST(Containment, ArcLoopsWithoutPolygonising) {
+  const Curve bump[] = {make_segment({0, 0}, {2, 0}), make_segment({2, 0}, {2, 2}),
+                        make_bulge_arc({2, 2}, {0, 2}, 1), make_segment({0, 2}, {0, 0})};
+  EXPECT_TRUE(loop_encloses(bump, {1, 2.9}));   // inside the bump
+  EXPECT_FALSE(loop_encloses(bump, {1, 3.1}));  // above it
+  EXPECT_TRUE(loop_encloses(bump, {1, 1}));
+  EXPECT_FALSE(loop_encloses(bump, {1.9, 2.9}));  // beside the bump, above the square
+  // A notch: concave arc cut into the top edge.
+  const Curve notch[] = {make_segment({0, 0}, {2, 0}), make_segment({2, 0}, {2, 2}),
+                         make_bulge_arc({2, 2}, {0, 2}, -1), make_segment({0, 2}, {0, 0})};
+  EXPECT_FALSE(loop_encloses(notch, {1, 1.5}));
+  EXPECT_TRUE(loop_encloses(notch, {0.1, 1.5}));
+  EXPECT_NEAR(loop_signed_area(notch), 4.0 - kPi / 2.0, 1e-12);
+}
+
+TEST(SegmentSegment, Crossing) {
+  const Intersection x =
+      intersect(make_segment({0, 0}, {2, 2}), make_segment({0, 2}, {2, 0}), kEps);
+  ASSERT_EQ(x.kind, IntersectionKind::one);
+  EXPECT_NEAR(x.hits[0].point.x, 1.0, 1e-12);
+  EXPECT_NEAR(x.hits[0].ta0, 0.5, 1e-12);
+  EXPECT_NEAR(x.hits[0].tb0, 0.5, 1e-12);
+}
+
+TEST(SegmentSegment, ParallelApartIsNone) {
+  EXPECT_EQ(intersect(make_segment({0, 0}, {2, 0}), make_segment({0, 1}, {2, 1}), kEps).kind,
+            IntersectionKind::none);
+}
+
+TEST(SegmentSegment, CollinearOverlapOppositeDirections) {
+  const Intersection x =
+      intersect(make_segment({0, 0}, {4, 0}), make_segment({3, 0}, {1, 0}), kEps);
+  ASSERT_EQ(x.kind, IntersectionKind::overlapping);
+  EXPECT_FALSE(x.same_direction);
+  ASSERT_EQ(x.count, 1);
+  EXPECT_NEAR(x.hits[0].ta0, 0.25, 1e-12);
+  EXPECT_NEAR(x.hits[0].ta1, 0.75, 1e-12);
+  EXPECT_NEAR(x.hits[0].tb0, 1.0, 1e-12);
+  EXPECT_NEAR(x.hits[0].tb1, 0.0, 1e-12);
+}
+
+TEST(SegmentSegment, CollinearEndToEndIsATouch) {
+  const Intersection x =
+      intersect(make_segment({0, 0}, {1, 0}), make_segment({1, 0}, {2, 0}), kEps);
+  ASSERT_EQ(x.kind, IntersectionKind::tangent);
+  EXPECT_NEAR(x.hits[0].ta0, 1.0, 1e-12);
+  EXPECT_NEAR(x.hits[0].tb0, 0.0, 1e-12);
+}
+
+TEST(SegmentSegment, EndpointWithinEpsilonOfTheOtherCounts) {
+  // A T-junction whose stem stops 1e-12 short of the bar, at a shallow angle.
+  const Intersection x =
+      intersect(make_segment({0, 0}, {10, 0}), make_segment({5, 1e-12}, {15, 1e-3}), kEps);
+  EXPECT_NE(x.kind, IntersectionKind::none);
+}
+
+TEST(SegmentArc, TwoCrossings) {
+  const Intersection x = intersect(make_segment({-2, 0.5}, {2, 0.5}), make_circle({0, 0}, 1), kEps);
+  ASSERT_EQ(x.kind, IntersectionKind::two);
+  for (int i = 0; i < 2; ++i) EXPECT_NEAR(length(x.hits[i].point), 1.0, 1e-12);
+}
+
+TEST(SegmentArc, TangentLine) {
+  const Intersection x = intersect(make_segment({-2, 1}, {2, 1}), make_circle({0, 0}, 1), kEps);
+  ASSERT_EQ(x.kind, IntersectionKind::tangent);
+  EXPECT_NEAR(x.hits[0].point.x, 0.0, 1e-9);
+  EXPECT_NEAR(x.hits[0].point.y, 1.0, 1e-12);
+}
+
+TEST(SegmentArc, CrossingOffTheArcIsIgnored) {
+  const Curve upper = arc_deg({0, 0}, 1, 0, 180);
+  EXPECT_EQ(intersect(make_segment({-2, -0.5}, {2, -0.5}), upper, kEps).kind,
+            IntersectionKind::none);
+  const Intersection x = intersect(make_segment({0, -2}, {0, 2}), upper, kEps);
+  ASSERT_EQ(x.kind, IntersectionKind::one);
+  EXPECT_NEAR(x.hits[0].tb0, 0.5, 1e-12);  // parameters come back in (segment, arc) order
+  EXPECT_NEAR(x.hits[0].ta0, 0.75, 1e-12);
+  const Intersection swapped = intersect(upper, make_segment({0, -2}, {0, 2}), kEps);
+  EXPECT_NEAR(swapped.hits[0].ta0, 0.5, 1e-12);
+  EXPECT_NEAR(swapped.hits[0].tb0, 0.75, 1e-12);
+}
+
+TEST(ArcArc, TwoCrossings) {
+  const Intersection x = intersect(make_circle({0, 0}, 1), make_circle({1, 0}, 1), kEps);
+  ASSERT_EQ(x.kind, IntersectionKind::two);
+  for (int i = 0; i < 2; ++i) EXPECT_NEAR(x.hits[i].point.x, 0.5, 1e-12);
+}
+
+TEST(ArcArc, ExternalAndInternalTangency) {
+  const Intersection ext = intersect(make_circle({0, 0}, 1), make_circle({3, 0}, 2), kEps);
+  ASSERT_EQ(ext.kind, IntersectionKind::tangent);
+  EXPECT_NEAR(ext.hits[0].point.x, 1.0, 1e-12);
+  const Intersection in = intersect(make_circle({0, 0}, 3), make_circle({1, 0}, 2), kEps);
+  ASSERT_EQ(in.kind, IntersectionKind::tangent);
+  EXPECT_NEAR(in.hits[0].point.x, 3.0, 1e-12);
+}
+
+TEST(ArcArc, ConcentricDifferentRadiiNeverMeet) {
+  EXPECT_EQ(intersect(make_circle({0, 0}, 1), make_circle({0, 0}, 2), kEps).kind,
+            IntersectionKind::none);
+}
+
+TEST(ArcArc, CocircularPieces) {
+  // Same circle: [0, 200] degrees against [180, 370]: two shared pieces.
+  const Intersection x = intersect(arc_deg({0, 0}, 2, 0, 200), arc_deg({0, 0}, 2, 180, 190), kEps);
+  ASSERT_EQ(x.kind, IntersectionKind::overlapping);
+  EXPECT_TRUE(x.same_direction);
+  ASSERT_EQ(x.count, 2);
+  double total = 0;
+  for (int i = 0; i < 2; ++i) total += std::fabs(x.hits[i].ta1 - x.hits[i].ta0) * 200.0;
+  EXPECT_NEAR(total, 30.0, 1e-9);  // degrees shared: [180, 200] and [0, 10]
+}
+
+TEST(ArcArc, CocircularOppositeDirectionsAndEndTouch) {
+  const Intersection x = intersect(arc_deg({0, 0}, 1, 0, 90), arc_deg({0, 0}, 1, 90, -45), kEps);
+  ASSERT_EQ(x.kind, IntersectionKind::overlapping);
+  EXPECT_FALSE(x.same_direction);
+  const Intersection touch = intersect(arc_deg({0, 0}, 1, 0, 90), arc_deg({0, 0}, 1, 90, 90), kEps);
+  EXPECT_EQ(touch.kind, IntersectionKind::tangent);
+}
+
+TEST(ArcArc, PerfectFitCircles) {
+  // A pin in a hole of the same radius: the whole circle is shared, travelled oppositely.
+  const Intersection x =
+      intersect(make_circle({0, 0}, 1, true), make_circle({0, 0}, 1, false), kEps);
+  ASSERT_EQ(x.kind, IntersectionKind::overlapping);
+  EXPECT_FALSE(x.same_direction);
+}
+
+TEST(Distance, PointToArcUsesTheNearerEnd) {
+  const Curve upper = arc_deg({0, 0}, 1, 0, 180);
+  EXPECT_NEAR(distance_to_curve(upper, {0, 3}), 2.0, 1e-12);
+  EXPECT_NEAR(distance_to_curve(upper, {0, -3}), std::hypot(1.0, 3.0), 1e-12);
+  EXPECT_NEAR(distance_to_curve(upper, {0, 0}), 1.0, 1e-12);
+}
+
+TEST(Distance, AgreesWithSamplingOnRandomCurves) {
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> u(-3, 3), ang(-kPi, kPi), sw(-1.9 * kPi, 1.9 * kPi),
+      rad(0.2, 2.0);
+  auto random_curve = [&](bool arc) {
+    return arc ? make_arc({u(rng), u(rng)}, rad(rng), ang(rng), sw(rng))
+               : make_segment({u(rng), u(rng)}, {u(rng), u(rng)});
+  };
+  for (int i = 0; i < 600; ++i) {
+    const Curve a = random_curve(i % 2 == 0), b = random_curve(i % 3 == 0);
+    const double exact = distance_between(a, b);
+    const double sampled = sampled_distance(a, b);
+    // Sampling overestimates by at most the sample spacing's sagitta-level error.
+    EXPECT_LE(exact, sampled + 1e-12) << i;
+    EXPECT_GE(exact, sampled - 5e-3) << i;
+    // A positive distance means no intersection, and an intersection means distance 0.
+    const Intersection x = intersect(a, b, 0.0);
+    if (x.count > 0) EXPECT_NEAR(exact, 0.0, 1e-9) << i;
+  }
+}
+
+TEST(Intersection, HitsLieOnBothCurvesForRandomPairs) {
+  std::mt19937 rng(777);
+  std::uniform_real_distribution<double> u(-3, 3), ang(-kPi, kPi), sw(-1.9 * kPi, 1.9 * kPi),
+      rad(0.2, 2.0);
+  int hits = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Curve a = (i % 2) ? make_arc({u(rng), u(rng)}, rad(rng), ang(rng), sw(rng))
+                            : make_segment({u(rng), u(rng)}, {u(rng), u(rng)});
+    const Curve b = (i % 3) ? make_arc({u(rng), u(rng)}, rad(rng), ang(rng), sw(rng))
+                            : make_segment({u(rng), u(rng)}, {u(rng), u(rng)});
+    const Intersection x = intersect(a, b, kEps);
+    for (int h = 0; h < x.count; ++h) {
+      ++hits;
+      EXPECT_NEAR(distance(point_at(a, x.hits[h].ta0), x.hits[h].point), 0.0, 1e-8) << i;
+      EXPECT_NEAR(distance(point_at(b, x.hits[h].tb0), x.hits[h].point), 0.0, 1e-8) << i;
+    }
+    if (x.count == 0) EXPECT_GT(distance_between(a, b), 0.0) << i;
+  }
+  EXPECT_GT(hits, 300);
+}
