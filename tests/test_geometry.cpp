@@ -262,3 +262,35 @@ TEST(Intersection, HitsLieOnBothCurvesForRandomPairs) {
   }
   EXPECT_GT(hits, 300);
 }
+
+TEST(Containment, PointOnAChordLineOfAnAntennaPairStaysInside) {
+  // A square with an arc traversed there and back (a dangling curve inside a face, as
+  // arrangement cycles have). Query points lie on the arc's chord line (up to round-off)
+  // and inside its disc: the two traversals must cancel whatever round-off says of sides.
+  std::mt19937 rng(4242);
+  std::uniform_real_distribution<double> u(0.5, 3.5), t(0.05, 0.95), b(-0.9, 0.9);
+  for (int i = 0; i < 20000; ++i) {
+    const Vec2 a{u(rng), u(rng)}, c{u(rng), u(rng)};
+    const Curve arc = make_bulge_arc(a, c, b(rng));
+    const Curve walk[] = {make_segment({0, 0}, {4, 0}),
+                          make_segment({4, 0}, {4, 4}),
+                          make_segment({4, 4}, {0, 4}),
+                          make_segment({0, 4}, {0, 0}),
+                          make_segment({0, 0}, a),
+                          arc,
+                          reversed(arc),
+                          make_segment(a, {0, 0})};
+    const Vec2 p = lerp(a, c, t(rng));
+    ASSERT_TRUE(loop_encloses(walk, p)) << i;
+  }
+}
+
+TEST(Containment, FullCircleInsideALongerCycleCountsItsDisc) {
+  // A square whose boundary walk also goes once around a circle centred on a corner.
+  const Curve walk[] = {make_segment({0, 0}, {4, 0}), make_circle({4, 0}, 1, true),
+                        make_segment({4, 0}, {4, 4}), make_segment({4, 4}, {0, 4}),
+                        make_segment({0, 4}, {0, 0})};
+  EXPECT_FALSE(loop_encloses(walk, {3.5, 0.2}));  // in the square and the disc: cancels
+  EXPECT_TRUE(loop_encloses(walk, {4.5, 0.2}));   // the disc only
+  EXPECT_TRUE(loop_encloses(walk, {2, 2}));       // the square only
+}

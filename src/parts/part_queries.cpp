@@ -7,20 +7,37 @@
 namespace cslice {
 namespace {
 
-// Even-odd crossing of a rightward ray from p with the chord from a to b, half-open in y so
-// a ray through a vertex counts it once.
-bool ray_crosses_chord(Vec2 a, Vec2 b, Vec2 p) {
+// Which side of the line through a and b the point p lies on: +1 left, -1 right, never 0.
+// Computed on the endpoints in a canonical order, so reversing a chord negates the answer
+// exactly, and an exact zero is resolved as if p were moved by (d, d^2) for an infinitesimal
+// d. Both containment tests below use this one sign, so they can never disagree about a
+// point on a chord: moving it across flips both, leaving the parity unchanged.
+int side_of_chord(Vec2 a, Vec2 b, Vec2 p) {
+  const bool swap = b.x < a.x || (b.x == a.x && b.y < a.y);
+  if (swap) std::swap(a, b);
+  int sign;
+  const double s = cross(b - a, p - a);
+  if (s != 0.0)
+    sign = s > 0.0 ? 1 : -1;
+  else if (b.y != a.y)
+    sign = b.y > a.y ? -1 : 1;
+  else
+    sign = b.x > a.x ? 1 : -1;
+  return swap ? -sign : sign;
+}
+
+// Even-odd crossing of a rightward ray from p with the chord from a to b. Half-open in y (as
+// if p were raised by d^2), so a ray through a vertex counts it once.
+bool ray_crosses_chord(Vec2 a, Vec2 b, Vec2 p, int side) {
   if ((a.y > p.y) == (b.y > p.y)) return false;
-  const double x_at = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-  return p.x < x_at;
+  return b.y > a.y ? side > 0 : side < 0;
 }
 
 // The region between an arc and its chord: the arc's disc cut by the chord's line, on the
 // side where the arc runs (right of the chord for counterclockwise arcs).
-bool in_circular_segment(const Curve& arc, Vec2 p) {
+bool in_circular_segment(const Curve& arc, Vec2 p, int side) {
   if (length_squared(p - arc.center) >= arc.radius * arc.radius) return false;
-  const double side = cross(arc.to - arc.from, p - arc.from);
-  return arc.sweep > 0.0 ? side < 0.0 : side > 0.0;
+  return arc.sweep > 0.0 ? side < 0 : side > 0;
 }
 
 }  // namespace
@@ -40,8 +57,15 @@ bool loop_encloses(std::span<const Curve> edges, Vec2 p) {
   }
   bool inside = false;
   for (const Curve& c : edges) {
-    if (ray_crosses_chord(c.from, c.to, p)) inside = !inside;
-    if (c.is_arc() && in_circular_segment(c, p)) inside = !inside;
+    if (c.from == c.to) {
+      // A full circle inside a longer cycle: its chord is a point, its segment the disc.
+      if (c.is_full_circle() && length_squared(p - c.center) < c.radius * c.radius)
+        inside = !inside;
+      continue;
+    }
+    const int side = side_of_chord(c.from, c.to, p);
+    if (ray_crosses_chord(c.from, c.to, p, side)) inside = !inside;
+    if (c.is_arc() && in_circular_segment(c, p, side)) inside = !inside;
   }
   return inside;
 }

@@ -1,0 +1,95 @@
+// The configuration-space slice at one orientation: the (x, y) plane of reference-point
+// positions of the moving part rotated by theta, split by contact segments into free and
+// blocked regions (paper sections 4, 6.1, 6.2, 6.5 and 7).
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "cslice/pair.hpp"
+
+namespace cslice {
+
+// The kinds of feature pair that make contact segments, moving feature first.
+enum class ContactKind {
+  vertex_segment,  // moving vertex on a fixed segment: a line segment
+  segment_vertex,  // moving segment on a fixed vertex: a line segment
+  arc_segment,     // moving arc on a fixed segment: a line segment
+  segment_arc,     // moving segment on a fixed arc: a line segment
+  arc_arc,         // arcs on both sides: a circular arc
+  vertex_arc,      // moving vertex on a fixed arc: a circular arc
+  arc_vertex,      // moving arc on a fixed vertex: a circular arc
+};
+std::string_view to_string(ContactKind k);
+
+// The configurations where one moving feature touches one fixed feature, at this theta.
+struct ContactSegment {
+  int id = 0;
+  int moving_feature = 0;  // index into pair.moving.features
+  int fixed_feature = 0;   // index into pair.fixed.features
+  ContactKind kind = ContactKind::vertex_segment;
+  // Oriented so the blocked side (where the two features overlap) lies on its left.
+  Curve curve;
+  // A perfect fit (e.g. a pin in a hole of its own radius): the whole contact set is the
+  // single point curve.from.
+  bool is_point = false;
+};
+
+// A piece of a realizable contact segment: part of the free-space boundary, or a degenerate
+// piece of contact space with blocked space on both sides (a sliding fit).
+struct ContactPiece {
+  int segment = 0;  // contact segment id (the lowest, when several coincide)
+  Curve curve;
+};
+
+struct FreeComponent {
+  int id = 0;
+  bool bounded = true;
+  double area = 0.0;  // NaN when unbounded
+  Vec2 sample;        // strictly inside, as far from the boundary as a few scan lines find
+  // Boundary cycles: for a bounded component the outer cycle first (counterclockwise), then
+  // its holes (clockwise); for the unbounded one, only clockwise cycles. Each piece runs
+  // with the component on its left.
+  std::vector<std::vector<ContactPiece>> boundary;
+};
+
+struct ContactGraphEdge {
+  int a = 0, b = 0;  // contact segment ids, a < b
+  Vec2 at;
+};
+
+// Nodes are the realizable contact segments; edges the points where two of them meet.
+struct ContactGraph {
+  std::vector<int> nodes;
+  std::vector<ContactGraphEdge> edges;
+};
+
+// Contact configurations with no free space around them: free space shrunk to a point (a
+// perfect fit) or a curve (a sliding fit). Kept, never dropped.
+struct DegenerateContact {
+  std::vector<int> segments;  // contact segments through it
+  Curve curve;                // a point when curve.from == curve.to
+  bool is_point = false;
+};
+
+struct Slice {
+  double theta = 0.0;
+  std::vector<ContactSegment> contact_segments;
+  std::vector<FreeComponent> free_components;
+  std::vector<ContactPiece> realizable;  // every realizable piece, boundary and degenerate
+  std::vector<DegenerateContact> degenerate;
+  ContactGraph contact_graph;
+  double epsilon = 0.0;  // the pair's geometric epsilon: locate's band around contact space
+
+  // The free component whose interior holds p, or -1 (blocked, or within the geometric
+  // epsilon of contact space).
+  int locate(Vec2 p) const;
+};
+
+// Contact segments of every compatible feature pair at theta, after local overlap filtering.
+std::vector<ContactSegment> contact_segments(const Pair& pair, double theta);
+
+// The whole slice at theta.
+Slice compute_slice(const Pair& pair, double theta);
+
+}  // namespace cslice

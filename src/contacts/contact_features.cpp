@@ -1,0 +1,55 @@
+#include "contacts/contact_features.hpp"
+
+namespace cslice {
+namespace {
+
+double angle_of(Vec2 v) {
+  return std::atan2(v.y, v.x);
+}
+
+ContactFeature from_edge(const Part& part, const Feature& f) {
+  ContactFeature c;
+  c.kind = f.kind;
+  c.edge = edge_of(part, f);
+  if (f.kind == FeatureKind::segment) {
+    c.normals = {angle_of(perp_right(c.edge.to - c.edge.from)), 0.0};
+    return c;
+  }
+  c.center = c.edge.center;
+  if (c.edge.sweep > 0.0) {
+    // Material on the left of a counterclockwise arc is inside its circle: convex.
+    c.rho = c.edge.radius;
+    c.normals = {c.edge.start_angle, c.edge.sweep};
+  } else {
+    // Clockwise: material outside the circle, normals point at the centre.
+    c.rho = -c.edge.radius;
+    c.normals = {c.edge.start_angle + c.edge.sweep + kPi, -c.edge.sweep};
+  }
+  return c;
+}
+
+ContactFeature from_vertex(const Feature& f) {
+  ContactFeature c;
+  c.kind = FeatureKind::vertex;
+  c.center = f.point;
+  c.can_touch = f.convexity == Convexity::convex;
+  const double turn = std::atan2(cross(f.normal_in, f.normal_out), dot(f.normal_in, f.normal_out));
+  c.normals = {angle_of(f.normal_in), std::max(0.0, turn)};
+  return c;
+}
+
+}  // namespace
+
+std::vector<ContactFeature> contact_features(const Part& part) {
+  std::vector<ContactFeature> out;
+  out.reserve(part.features.size());
+  for (size_t i = 0; i < part.features.size(); ++i) {
+    const Feature& f = part.features[i];
+    ContactFeature c = f.kind == FeatureKind::vertex ? from_vertex(f) : from_edge(part, f);
+    c.feature = static_cast<int>(i);
+    out.push_back(c);
+  }
+  return out;
+}
+
+}  // namespace cslice

@@ -1,0 +1,176 @@
+// Contact segments of a pair at one orientation (paper Figure 13, section 6.5).
+//
+// Every non-segment feature is a disc boundary: centre c and signed radius rho (+r for a
+// convex arc, -r for a concave one, 0 for a vertex), with the set N of outward normals it
+// can touch with (an angle interval). When a moving feature touches a fixed one at a point
+// where the fixed outward normal is n, the moving outward normal is -n and
+//   C_moving = c_fixed + (rho_fixed + rho_moving) n,   O = C_moving - R(theta) c_moving,
+// so a disc pair traces a circular arc of radius |rho_f + rho_m| about c_f - R c_m, for n in
+// N_f intersected with -R N_m. A segment contributes one normal and its extent instead,
+// giving a line segment. Local overlap filtering is the normal-set test plus the sign rule:
+// a concave feature touches only from inside its circle (rho_f + rho_m <= 0) and never
+// another concave feature or a segment; a reflex vertex touches nothing. Segment/segment
+// contacts are subsumed by the vertex contacts at their ends (paper 6.1).
+#include <algorithm>
+#include <optional>
+
+#include "contacts/contact_features.hpp"
+#include "cslice/slice.hpp"
+
+namespace cslice {
+
+std::string_view to_string(ContactKind k) {
+  switch (k) {
+    case ContactKind::vertex_segment:
+      return "vertex_segment";
+    case ContactKind::segment_vertex:
+      return "segment_vertex";
+    case ContactKind::arc_segment:
+      return "arc_segment";
+    case ContactKind::segment_arc:
+      return "segment_arc";
+    case ContactKind::arc_arc:
+      return "arc_arc";
+    case ContactKind::vertex_arc:
+      return "vertex_arc";
+    case ContactKind::arc_vertex:
+      return "arc_vertex";
+  }
+  return "?";
+}
+
+namespace {
+
+// Angle intervals are [lo, lo + span] counterclockwise, span in [0, 2pi].
+bool interval_contains(const AngleInterval& a, double angle, double angular_eps) {
+  if (a.span >= kTwoPi) return true;
+  double d = std::fmod(angle - a.lo, kTwoPi);
+  if (d < 0.0) d += kTwoPi;
+  return d <= a.span + angular_eps || d >= kTwoPi - angular_eps;
+}
+
+// Intersection of two circular intervals: up to two intervals (b may wrap around a's end).
+int intersect_intervals(const AngleInterval& a, const AngleInterval& b, double angular_eps,
+                        std::array<AngleInterval, 2>& out) {
+  if (a.span >= kTwoPi) {
+    out[0] = b;
+    return 1;
+  }
+  if (b.span >= kTwoPi) {
+    out[0] = a;
+    return 1;
+  }
+  double d = std::fmod(b.lo - a.lo, kTwoPi);
+  if (d < 0.0) d += kTwoPi;
+  int n = 0;
+  for (double shift : {d, d - kTwoPi}) {
+    const double lo = std::max(0.0, shift), hi = std::min(a.span, shift + b.span);
+    if (hi >= lo - angular_eps) out[n++] = {a.lo + lo, std::max(0.0, hi - lo)};
+  }
+  return n;
+}
+
+ContactKind disc_pair_kind(const ContactFeature& m, const ContactFeature& f) {
+  if (m.kind == FeatureKind::vertex) return ContactKind::vertex_arc;
+  if (f.kind == FeatureKind::vertex) return ContactKind::arc_vertex;
+  return ContactKind::arc_arc;
+}
+
+class ContactBuilder {
+ public:
+  ContactBuilder(const Pair& pair, double theta)
+      : pair_(pair), rot_(Pose{0.0, 0.0, theta}), theta_(theta) {}
+
+  void add_pair(const ContactFeature& m, const ContactFeature& f) {
+    if (!m.can_touch || !f.can_touch) return;
+    const bool m_seg = m.kind == FeatureKind::segment, f_seg = f.kind == FeatureKind::segment;
+    if (m_seg && f_seg) return;
+    if (f_seg) return add_disc_on_segment(m, f);
+    if (m_seg) return add_segment_on_disc(m, f);
+    add_disc_on_disc(m, f);
+  }
+
+  std::vector<ContactSegment> take() { return std::move(out_); }
+
+ private:
+  // The moving feature's normal set, rotated and reversed: the fixed normals it can meet.
+  AngleInterval opposed(const AngleInterval& n) const { return {n.lo + theta_ + kPi, n.span}; }
+
+  void emit(const ContactFeature& m, const ContactFeature& f, ContactKind kind, Curve curve,
+            bool is_point = false) {
+    ContactSegment s;
+    s.id = static_cast<int>(out_.size());
+    s.moving_feature = m.feature;
+    s.fixed_feature = f.feature;
+    s.kind = kind;
+    s.curve = curve;
+    s.is_point = is_point;
+    out_.push_back(s);
+  }
+
+  // A moving disc feature on a fixed segment: the segment shifted by rho_m n_f - R c_m.
+  void add_disc_on_segment(const ContactFeature& m, const ContactFeature& f) {
+    if (m.rho < 0.0) return;  // a concave arc cannot rest on a straight edge
+    if (!interval_contains(opposed(m.normals), f.normals.lo, pair_.tol.angular)) return;
+    const Vec2 shift = m.rho * unit_vector(f.normals.lo) - rot_.rotate(m.center);
+    const ContactKind kind =
+        m.kind == FeatureKind::vertex ? ContactKind::vertex_segment : ContactKind::arc_segment;
+    emit(m, f, kind, make_segment(f.edge.from + shift, f.edge.to + shift));
+  }
+
+  // A moving segment on a fixed disc feature: the reversed rotated segment, placed so its
+  // touching point meets the disc at the normal opposite to the segment's.
+  void add_segment_on_disc(const ContactFeature& m, const ContactFeature& f) {
+    if (f.rho < 0.0) return;
+    const double n_angle = m.normals.lo + theta_ + kPi;
+    if (!interval_contains(f.normals, n_angle, pair_.tol.angular)) return;
+    const Vec2 touch = f.center + f.rho * unit_vector(n_angle);
+    const ContactKind kind =
+        f.kind == FeatureKind::vertex ? ContactKind::segment_vertex : ContactKind::segment_arc;
+    emit(m, f, kind,
+         make_segment(touch - rot_.rotate(m.edge.from), touch - rot_.rotate(m.edge.to)));
+  }
+
+  void add_disc_on_disc(const ContactFeature& m, const ContactFeature& f) {
+    const bool m_concave = m.rho < 0.0, f_concave = f.rho < 0.0;
+    if (m_concave && f_concave) return;
+    const double rho = f.rho + m.rho;
+    const double eps = pair_.tol.geometric;
+    const bool both_vertices = m.kind == FeatureKind::vertex && f.kind == FeatureKind::vertex;
+    if (both_vertices) return;  // vertex/vertex contacts are endpoints of other segments
+    if ((m_concave || f_concave) && rho > eps) return;  // the convex one is too big to fit
+    std::array<AngleInterval, 2> parts;
+    const int n = intersect_intervals(f.normals, opposed(m.normals), pair_.tol.angular, parts);
+    const Vec2 c = f.center - rot_.rotate(m.center);
+    for (int i = 0; i < n; ++i) {
+      if (parts[i].span <= pair_.tol.angular) continue;  // a single touching direction
+      if (std::fabs(rho) <= eps) {
+        emit(m, f, disc_pair_kind(m, f), make_segment(c, c), true);  // a perfect fit
+      } else if (rho > 0.0) {
+        emit(m, f, disc_pair_kind(m, f), make_arc(c, rho, parts[i].lo, parts[i].span));
+      } else {
+        // c + rho n = c + |rho| n(phi + pi); traverse clockwise to keep blocked on the left.
+        emit(m, f, disc_pair_kind(m, f),
+             make_arc(c, -rho, parts[i].lo + parts[i].span + kPi, -parts[i].span));
+      }
+    }
+  }
+
+  const Pair& pair_;
+  Transform rot_;
+  double theta_;
+  std::vector<ContactSegment> out_;
+};
+
+}  // namespace
+
+std::vector<ContactSegment> contact_segments(const Pair& pair, double theta) {
+  const std::vector<ContactFeature> moving = contact_features(pair.moving);
+  const std::vector<ContactFeature> fixed = contact_features(pair.fixed);
+  ContactBuilder builder(pair, theta);
+  for (const ContactFeature& m : moving)
+    for (const ContactFeature& f : fixed) builder.add_pair(m, f);
+  return builder.take();
+}
+
+}  // namespace cslice

@@ -1,0 +1,310 @@
+// Arrangement of contact segments.
+//
+// Degenerate input is the norm (parallel edges give coincident contact segments, perfect
+// fits make many curves meet at one point), so every decision uses one rule: points within
+// the geometric epsilon are one vertex (merged transitively through a grid), pieces joining
+// the same two vertices along the same curve are one edge carrying all their labels, and
+// curves leaving a vertex in the same direction are ordered by curvature.
+#include "slice/arrangement.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <unordered_map>
+
+#include "parts/loop_queries.hpp"
+
+namespace cslice {
+namespace {
+
+struct SplitPoint {
+  int curve;
+  double t;
+  Vec2 p;
+};
+
+class UnionFind {
+ public:
+  explicit UnionFind(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  int find(int a) {
+    while (parent_[a] != a) a = parent_[a] = parent_[parent_[a]];
+    return a;
+  }
+  void unite(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);  // the lowest index represents
+  }
+
+ private:
+  std::vector<int> parent_;
+};
+
+// Every pair of curves whose boxes overlap, found by sweeping boxes sorted by their left x.
+std::vector<std::pair<int, int>> candidate_pairs(const std::vector<Box>& boxes) {
+  std::vector<int> order(boxes.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return boxes[a].lo.x < boxes[b].lo.x; });
+  std::vector<std::pair<int, int>> pairs;
+  for (size_t i = 0; i < order.size(); ++i) {
+    const Box& a = boxes[order[i]];
+    for (size_t j = i + 1; j < order.size() && boxes[order[j]].lo.x <= a.hi.x; ++j)
+      if (a.overlaps(boxes[order[j]])) pairs.emplace_back(order[i], order[j]);
+  }
+  return pairs;
+}
+
+std::vector<SplitPoint> split_points(const std::vector<Curve>& curves, double eps) {
+  std::vector<SplitPoint> splits;
+  std::vector<Box> boxes;
+  for (size_t i = 0; i < curves.size(); ++i) {
+    splits.push_back({int(i), 0.0, curves[i].from});
+    splits.push_back({int(i), 1.0, curves[i].to});
+    boxes.push_back(bounding_box(curves[i]).inflated(eps));
+  }
+  for (auto [i, j] : candidate_pairs(boxes)) {
+    const Intersection x = intersect(curves[i], curves[j], eps);
+    for (int k = 0; k < x.count; ++k) {
+      const IntersectionHit& h = x.hits[k];
+      splits.push_back({i, h.ta0, h.point});
+      splits.push_back({j, h.tb0, h.point});
+      if (h.is_piece) {
+        splits.push_back({i, h.ta1, h.point_end});
+        splits.push_back({j, h.tb1, h.point_end});
+      }
+    }
+  }
+  return splits;
+}
+
+// Merges split points closer than eps (transitively) into vertices; returns the vertex of
+// each split point and fills the vertex positions (each the first point of its cluster).
+std::vector<int> merge_points(const std::vector<SplitPoint>& splits, double eps,
+                              std::vector<Vec2>& vertices) {
+  const double cell = 2.0 * eps;
+  auto key = [&](long long ix, long long iy) { return ix * 73856093LL ^ iy * 19349663LL; };
+  std::unordered_map<long long, std::vector<int>> grid;
+  UnionFind uf(splits.size());
+  for (size_t i = 0; i < splits.size(); ++i) {
+    const long long ix = std::llround(std::floor(splits[i].p.x / cell));
+    const long long iy = std::llround(std::floor(splits[i].p.y / cell));
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy) {
+        auto it = grid.find(key(ix + dx, iy + dy));
+        if (it == grid.end()) continue;
+        for (int j : it->second)
+          if (distance(splits[i].p, splits[j].p) <= eps) uf.unite(int(i), j);
+      }
+    grid[key(ix, iy)].push_back(int(i));
+  }
+  std::vector<int> vertex_of(splits.size());
+  std::unordered_map<int, int> root_vertex;
+  for (size_t i = 0; i < splits.size(); ++i) {
+    const int root = uf.find(int(i));
+    auto [it, added] = root_vertex.emplace(root, int(vertices.size()));
+    if (added) vertices.push_back(splits[root].p);
+    vertex_of[i] = it->second;
+  }
+  return vertex_of;
+}
+
+Curve piece_of(const Curve& c, double t0, double t1, Vec2 from, Vec2 to) {
+  if (c.is_segment()) return make_segment(from, to);
+  Curve piece = make_arc(c.center, c.radius, c.start_angle + t0 * c.sweep, (t1 - t0) * c.sweep);
+  piece.from = from;
+  piece.to = to;
+  return piece;
+}
+
+// Adds an edge, or merges it into a coincident one (same ends, same midpoint).
+void add_edge(Arrangement& arr, std::unordered_map<long long, std::vector<int>>& by_ends,
+              ArrangementEdge e, double eps) {
+  const long long key = (long long)std::min(e.u, e.v) << 32 | std::max(e.u, e.v);
+  const Vec2 mid = point_at(e.curve, 0.5);
+  for (int other : by_ends[key]) {
+    ArrangementEdge& o = arr.edges[other];
+    if (distance(point_at(o.curve, 0.5), mid) > eps) continue;
+    const bool same_way =
+        o.u == e.u && o.v == e.v && (e.u != e.v || o.curve.sweep * e.curve.sweep > 0);
+    for (EdgeLabel l : e.labels)
+      o.labels.push_back({l.segment, same_way ? l.blocked_left : !l.blocked_left});
+    return;
+  }
+  by_ends[key].push_back(int(arr.edges.size()));
+  arr.edges.push_back(std::move(e));
+}
+
+void build_edges(Arrangement& arr, const std::vector<Curve>& curves, const std::vector<int>& ids,
+                 const std::vector<SplitPoint>& splits, const std::vector<int>& vertex_of,
+                 double eps) {
+  std::vector<std::vector<int>> per_curve(curves.size());
+  for (size_t i = 0; i < splits.size(); ++i) per_curve[splits[i].curve].push_back(int(i));
+  std::unordered_map<long long, std::vector<int>> by_ends;
+  for (size_t c = 0; c < curves.size(); ++c) {
+    auto& list = per_curve[c];
+    std::sort(list.begin(), list.end(), [&](int a, int b) { return splits[a].t < splits[b].t; });
+    for (size_t k = 0; k + 1 < list.size(); ++k) {
+      const int a = list[k], b = list[k + 1];
+      if (vertex_of[a] == vertex_of[b] && !curves[c].is_full_circle()) continue;
+      if (vertex_of[a] == vertex_of[b] && splits[b].t - splits[a].t < 0.5) continue;
+      ArrangementEdge e;
+      e.u = vertex_of[a];
+      e.v = vertex_of[b];
+      e.curve = piece_of(curves[c], splits[a].t, splits[b].t, arr.vertices[e.u], arr.vertices[e.v]);
+      e.tangent_u = tangent_at(curves[c], splits[a].t);
+      e.tangent_v = tangent_at(curves[c], splits[b].t);
+      e.labels.push_back({ids[c], true});
+      add_edge(arr, by_ends, std::move(e), eps);
+    }
+  }
+}
+
+struct Direction {
+  int half_edge;
+  double angle;
+  double curvature;
+};
+
+// Whether b, leaving a vertex just counterclockwise of a (by angle), really lies clockwise
+// of it: b turns right relative to a and their directions differ so little that the two
+// stay within eps of each other until they cross again, a crossing the intersection step
+// merged into this vertex. Beyond eps, curvature decides the order.
+bool curvature_overrides(const Direction& a, const Direction& b, double eps, double angular_eps) {
+  const double gap = b.angle - a.angle, bend = a.curvature - b.curvature;
+  if (bend <= 0.0) return false;
+  return gap <= angular_eps || gap * gap <= 2.0 * eps * bend;
+}
+
+// Orders the half-edges leaving each vertex counterclockwise by tangent, ties (tangent
+// curves) broken by curvature: the one turning left comes later.
+void order_outgoing(Arrangement& arr, double eps, double angular_eps) {
+  std::vector<std::vector<Direction>> dirs(arr.vertices.size());
+  for (size_t e = 0; e < arr.edges.size(); ++e) {
+    const ArrangementEdge& edge = arr.edges[e];
+    const Vec2 t0 = edge.tangent_u, t1 = -edge.tangent_v;
+    const double k = signed_curvature(edge.curve);
+    dirs[edge.u].push_back({int(2 * e), std::atan2(t0.y, t0.x), k});
+    dirs[edge.v].push_back({int(2 * e + 1), std::atan2(t1.y, t1.x), -k});
+  }
+  arr.outgoing.assign(arr.vertices.size(), {});
+  for (size_t v = 0; v < dirs.size(); ++v) {
+    auto& d = dirs[v];
+    for (Direction& x : d)
+      if (x.angle > kPi - angular_eps) x.angle -= kTwoPi;  // one representative for +-pi
+    std::sort(d.begin(), d.end(),
+              [](const Direction& a, const Direction& b) { return a.angle < b.angle; });
+    // Insertion pass: nearly sorted already, only tangent neighbours move.
+    for (size_t i = 1; i < d.size(); ++i)
+      for (size_t j = i; j > 0 && curvature_overrides(d[j - 1], d[j], eps, angular_eps); --j)
+        std::swap(d[j - 1], d[j]);
+    for (const Direction& x : d) arr.outgoing[v].push_back(x.half_edge);
+  }
+}
+
+// Links each half-edge to the next around its left face: at its target, the half-edge just
+// clockwise of its twin.
+void link_half_edges(Arrangement& arr) {
+  const size_t n = 2 * arr.edges.size();
+  std::vector<int> position(n);
+  for (const auto& out : arr.outgoing)
+    for (size_t i = 0; i < out.size(); ++i) position[out[i]] = int(i);
+  arr.next.assign(n, -1);
+  for (size_t h = 0; h < n; ++h) {
+    const int twin = int(h) ^ 1;
+    const auto& out = arr.outgoing[arr.target(int(h))];
+    const int deg = int(out.size());
+    arr.next[h] = out[(position[twin] - 1 + deg) % deg];
+  }
+}
+
+std::vector<int> vertex_components(const Arrangement& arr) {
+  UnionFind uf(arr.vertices.size());
+  for (const ArrangementEdge& e : arr.edges) uf.unite(e.u, e.v);
+  std::vector<int> comp(arr.vertices.size());
+  for (size_t v = 0; v < comp.size(); ++v) comp[v] = uf.find(int(v));
+  return comp;
+}
+
+void trace_cycles(Arrangement& arr) {
+  const size_t n = 2 * arr.edges.size();
+  const std::vector<int> comp = vertex_components(arr);
+  arr.cycle_of.assign(n, -1);
+  for (size_t start = 0; start < n; ++start) {
+    if (arr.cycle_of[start] >= 0) continue;
+    ArrangementCycle cycle;
+    cycle.component = comp[arr.origin(int(start))];
+    int h = int(start);
+    do {
+      arr.cycle_of[h] = int(arr.cycles.size());
+      cycle.half_edges.push_back(h);
+      const Curve c = arr.half_curve(h);
+      cycle.area += signed_area_contribution(c);
+      cycle.box.add(bounding_box(c));
+      h = arr.next[h];
+    } while (h != int(start) && arr.cycle_of[h] < 0);
+    arr.cycles.push_back(std::move(cycle));
+  }
+}
+
+std::vector<Curve> cycle_curves(const Arrangement& arr, const ArrangementCycle& c) {
+  std::vector<Curve> curves;
+  for (int h : c.half_edges) curves.push_back(arr.half_curve(h));
+  return curves;
+}
+
+// Bounded faces come from counterclockwise cycles; every other cycle bounds a connected
+// component from outside and belongs to the smallest bounded face of another component
+// around it, or to the unbounded face.
+void assign_faces(Arrangement& arr, double area_eps) {
+  arr.faces.assign(1, ArrangementFace{});
+  std::vector<int> outer;
+  for (size_t c = 0; c < arr.cycles.size(); ++c) {
+    if (arr.cycles[c].area <= area_eps) continue;
+    arr.cycles[c].face = int(arr.faces.size());
+    arr.faces.push_back({true, {int(c)}});
+    outer.push_back(int(c));
+  }
+  std::vector<std::vector<Curve>> outer_curves;
+  for (int c : outer) outer_curves.push_back(cycle_curves(arr, arr.cycles[c]));
+  for (size_t c = 0; c < arr.cycles.size(); ++c) {
+    ArrangementCycle& hole = arr.cycles[c];
+    if (hole.face >= 0) continue;
+    const Vec2 p = arr.vertices[arr.origin(hole.half_edges.front())];
+    int best = -1;
+    for (size_t k = 0; k < outer.size(); ++k) {
+      const ArrangementCycle& o = arr.cycles[outer[k]];
+      if (o.component == hole.component || !o.box.overlaps(hole.box)) continue;
+      if (best >= 0 && o.area >= arr.cycles[outer[best]].area) continue;
+      if (loop_encloses(outer_curves[k], p)) best = int(k);
+    }
+    hole.face = best < 0 ? 0 : arr.cycles[outer[best]].face;
+    arr.faces[hole.face].cycles.push_back(int(c));
+  }
+}
+
+}  // namespace
+
+Vec2 Arrangement::direction(int h) const {
+  const ArrangementEdge& e = edges[h / 2];
+  return h % 2 == 0 ? e.tangent_u : -e.tangent_v;
+}
+
+Curve Arrangement::half_curve(int h) const {
+  const Curve& c = edges[h / 2].curve;
+  return h % 2 == 0 ? c : reversed(c);
+}
+
+Arrangement build_arrangement(const std::vector<Curve>& curves, const std::vector<int>& segment_ids,
+                              const Tolerances& tol) {
+  Arrangement arr;
+  const std::vector<SplitPoint> splits = split_points(curves, tol.geometric);
+  const std::vector<int> vertex_of = merge_points(splits, tol.geometric, arr.vertices);
+  build_edges(arr, curves, segment_ids, splits, vertex_of, tol.geometric);
+  order_outgoing(arr, tol.geometric, tol.angular);
+  link_half_edges(arr);
+  trace_cycles(arr);
+  assign_faces(arr, tol.area);
+  return arr;
+}
+
+}  // namespace cslice

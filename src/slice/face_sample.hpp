@@ -1,0 +1,14 @@
+// A point strictly inside a face of an arrangement, far from its boundary.
+#pragma once
+
+#include "cslice/tolerance.hpp"
+#include "slice/arrangement.hpp"
+
+namespace cslice {
+
+// For a bounded face: the midpoint of the widest inside interval on each of a few scan
+// lines, keeping the one farthest from the boundary. For the unbounded face: a point beyond
+// every cycle.
+Vec2 face_sample(const Arrangement& arr, int face, const Tolerances& tol);
+
+}  // namespace cslice

@@ -1,0 +1,247 @@
+// The slice: arrangement faces labelled free or blocked, realizable pieces, degenerate
+// contacts, free components and the contact graph.
+//
+// Labelling is local wherever the geometry allows it: a face lying on the blocked side of
+// any contact segment along its boundary is blocked (the two features overlap just across
+// that segment). Only faces with every boundary segment's free side towards them, pieces
+// with blocked space on both sides of their own labels (a sliding fit), and vertices whose
+// every surrounding sector is blocked by segments through the vertex itself (a perfect fit)
+// are settled by the direct placement test, at one point each.
+#include <algorithm>
+
+#include "cslice/classify.hpp"
+#include "cslice/slice.hpp"
+#include "parts/loop_queries.hpp"
+#include "slice/arrangement.hpp"
+#include "slice/face_sample.hpp"
+
+namespace cslice {
+namespace {
+
+class SliceBuilder {
+ public:
+  SliceBuilder(const Pair& pair, double theta) : pair_(pair), tester_(pair), theta_(theta) {}
+
+  Slice build() {
+    slice_.theta = theta_;
+    slice_.epsilon = pair_.tol.geometric;
+    slice_.contact_segments = contact_segments(pair_, theta_);
+    std::vector<Curve> curves;
+    std::vector<int> ids;
+    for (const ContactSegment& s : slice_.contact_segments) {
+      if (s.is_point) continue;
+      curves.push_back(s.curve);
+      ids.push_back(s.id);
+    }
+    arr_ = build_arrangement(curves, ids, pair_.tol);
+    label_faces();
+    find_realizable_edges();
+    find_degenerate_vertices();
+    find_point_contacts();
+    collect_components();
+    build_contact_graph();
+    return std::move(slice_);
+  }
+
+ private:
+  bool blocked_at(Vec2 p) { return tester_.classify({p.x, p.y, theta_}) == Placement::blocked; }
+
+  void label_faces() {
+    blocked_.assign(arr_.faces.size(), false);
+    samples_.assign(arr_.faces.size(), Vec2{});
+    for (size_t f = 0; f < arr_.faces.size(); ++f) {
+      for (int c : arr_.faces[f].cycles)
+        for (int h : arr_.cycles[c].half_edges)
+          for (const EdgeLabel& l : arr_.edges[h / 2].labels)
+            if (Arrangement::left_is_blocked(h, l)) blocked_[f] = true;
+      if (blocked_[f]) continue;
+      samples_[f] = face_sample(arr_, int(f), pair_.tol);
+      blocked_[f] = blocked_at(samples_[f]);
+    }
+  }
+
+  void find_realizable_edges() {
+    realizable_.assign(arr_.edges.size(), false);
+    for (size_t e = 0; e < arr_.edges.size(); ++e) {
+      const ArrangementEdge& edge = arr_.edges[e];
+      if (!blocked_[arr_.face_of(int(2 * e))] || !blocked_[arr_.face_of(int(2 * e + 1))]) {
+        realizable_[e] = true;
+        continue;
+      }
+      bool left = false, right = false;
+      for (const EdgeLabel& l : edge.labels) (l.blocked_left ? left : right) = true;
+      if (!(left && right) || blocked_at(point_at(edge.curve, 0.5))) continue;
+      realizable_[e] = true;
+      DegenerateContact d;
+      d.segments = label_ids(int(e));
+      d.curve = edge.curve;
+      slice_.degenerate.push_back(std::move(d));
+    }
+  }
+
+  std::vector<int> label_ids(int e) const {
+    std::vector<int> ids;
+    for (const EdgeLabel& l : arr_.edges[e].labels) ids.push_back(l.segment);
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    return ids;
+  }
+
+  // Whether every sector around v is blocked by contact segments ending at or passing
+  // through v: only then can v itself be a contact configuration with no free space near.
+  // A label blocks the sector on its blocked side; two labels leaving v in opposite
+  // directions with their blocked sides on one side (one contact curve continuing through v,
+  // possibly as two segments meeting end to end) block the whole half plane on that side.
+  bool sectors_explained_locally(int v) const {
+    const std::vector<int>& out = arr_.outgoing[v];
+    const int d = int(out.size());
+    std::vector<char> explained(d, false);
+    std::vector<Vec2> dir(d);
+    for (int i = 0; i < d; ++i) {
+      dir[i] = arr_.direction(out[i]);
+      for (const EdgeLabel& l : arr_.edges[out[i] / 2].labels)
+        explained[Arrangement::left_is_blocked(out[i], l) ? i : (i - 1 + d) % d] = true;
+    }
+    for (int i = 0; i < d; ++i) {
+      for (int j = 0; j < d; ++j) {
+        if (i == j || dot(dir[i], dir[j]) > 0.0 ||
+            std::fabs(cross(dir[i], dir[j])) > pair_.tol.angular)
+          continue;
+        if (has_label_blocking(out[i], true) && has_label_blocking(out[j], false))
+          for (int k = i; k != j; k = (k + 1) % d) explained[k] = true;
+      }
+    }
+    return std::all_of(explained.begin(), explained.end(), [](char c) { return c != 0; });
+  }
+
+  bool has_label_blocking(int h, bool left) const {
+    for (const EdgeLabel& l : arr_.edges[h / 2].labels)
+      if (Arrangement::left_is_blocked(h, l) == left) return true;
+    return false;
+  }
+
+  void find_degenerate_vertices() {
+    for (size_t v = 0; v < arr_.vertices.size(); ++v) {
+      const std::vector<int>& out = arr_.outgoing[v];
+      if (out.empty()) continue;
+      bool all_blocked = true;
+      std::vector<int> ids;
+      for (int h : out) {
+        all_blocked = all_blocked && blocked_[arr_.face_of(h)] && !realizable_[h / 2];
+        for (int id : label_ids(h / 2)) ids.push_back(id);
+      }
+      if (!all_blocked || !sectors_explained_locally(int(v))) continue;
+      if (blocked_at(arr_.vertices[v])) continue;
+      std::sort(ids.begin(), ids.end());
+      ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+      add_degenerate_point(arr_.vertices[v], std::move(ids));
+    }
+  }
+
+  void add_degenerate_point(Vec2 p, std::vector<int> ids) {
+    for (DegenerateContact& d : slice_.degenerate) {
+      if (d.is_point && distance(d.curve.from, p) <= pair_.tol.geometric) {
+        d.segments.insert(d.segments.end(), ids.begin(), ids.end());
+        std::sort(d.segments.begin(), d.segments.end());
+        d.segments.erase(std::unique(d.segments.begin(), d.segments.end()), d.segments.end());
+        return;
+      }
+    }
+    DegenerateContact d;
+    d.is_point = true;
+    d.curve = make_segment(p, p);
+    d.segments = std::move(ids);
+    slice_.degenerate.push_back(std::move(d));
+  }
+
+  // Perfect fits of equal circles: contact space is one point whatever else happens there.
+  void find_point_contacts() {
+    for (const ContactSegment& s : slice_.contact_segments)
+      if (s.is_point && !blocked_at(s.curve.from)) add_degenerate_point(s.curve.from, {s.id});
+  }
+
+  ContactPiece piece_of_half_edge(int h) const {
+    std::vector<int> ids = label_ids(h / 2);
+    return {ids.front(), arr_.half_curve(h)};
+  }
+
+  void collect_components() {
+    for (size_t e = 0; e < arr_.edges.size(); ++e)
+      if (realizable_[e]) slice_.realizable.push_back(piece_of_half_edge(int(2 * e)));
+    for (size_t f = 0; f < arr_.faces.size(); ++f) {
+      if (blocked_[f]) continue;
+      FreeComponent comp;
+      comp.id = int(slice_.free_components.size());
+      comp.bounded = arr_.faces[f].bounded;
+      comp.sample = samples_[f];
+      double area = 0.0;
+      for (int c : arr_.faces[f].cycles) {
+        area += arr_.cycles[c].area;
+        std::vector<ContactPiece> cycle;
+        for (int h : arr_.cycles[c].half_edges) cycle.push_back(piece_of_half_edge(h));
+        comp.boundary.push_back(std::move(cycle));
+      }
+      comp.area = comp.bounded ? area : std::numeric_limits<double>::quiet_NaN();
+      slice_.free_components.push_back(std::move(comp));
+    }
+  }
+
+  void build_contact_graph() {
+    std::vector<int> nodes;
+    auto add_meetings = [&](const std::vector<int>& ids, Vec2 at) {
+      for (size_t i = 0; i < ids.size(); ++i)
+        for (size_t j = i + 1; j < ids.size(); ++j)
+          slice_.contact_graph.edges.push_back({ids[i], ids[j], at});
+    };
+    for (size_t v = 0; v < arr_.vertices.size(); ++v) {
+      std::vector<int> ids;
+      for (int h : arr_.outgoing[v])
+        if (realizable_[h / 2])
+          for (int id : label_ids(h / 2)) ids.push_back(id);
+      std::sort(ids.begin(), ids.end());
+      ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+      nodes.insert(nodes.end(), ids.begin(), ids.end());
+      add_meetings(ids, arr_.vertices[v]);
+    }
+    for (const DegenerateContact& d : slice_.degenerate) {
+      nodes.insert(nodes.end(), d.segments.begin(), d.segments.end());
+      if (d.is_point) add_meetings(d.segments, d.curve.from);
+    }
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    slice_.contact_graph.nodes = std::move(nodes);
+  }
+
+  const Pair& pair_;
+  PlacementTester tester_;
+  double theta_;
+  Slice slice_;
+  Arrangement arr_;
+  std::vector<char> blocked_;
+  std::vector<Vec2> samples_;
+  std::vector<char> realizable_;
+};
+
+}  // namespace
+
+int Slice::locate(Vec2 p) const {
+  for (const FreeComponent& c : free_components) {
+    bool inside = c.bounded ? false : true;
+    bool near = false;
+    for (size_t k = 0; k < c.boundary.size() && !near; ++k) {
+      std::vector<Curve> curves;
+      for (const ContactPiece& piece : c.boundary[k]) curves.push_back(piece.curve);
+      near = distance_to_curves(curves, p) <= epsilon;
+      if (loop_encloses(curves, p)) inside = !inside;
+    }
+    if (near) return -1;
+    if (inside) return c.id;
+  }
+  return -1;
+}
+
+Slice compute_slice(const Pair& pair, double theta) {
+  return SliceBuilder(pair, theta).build();
+}
+
+}  // namespace cslice

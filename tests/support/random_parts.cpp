@@ -1,0 +1,42 @@
+#include "support/random_parts.hpp"
+
+#include <sstream>
+
+namespace cslice::testkit {
+
+std::string random_loop_json(std::mt19937& rng, const RandomLoopOptions& o) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::ostringstream out;
+  out.precision(17);
+  out << "[";
+  for (int i = 0; i < o.vertices; ++i) {
+    const double angle = kTwoPi * (i + 0.8 * unit(rng)) / o.vertices;
+    const double r = o.radius * (1.0 - o.roughness + 2.0 * o.roughness * unit(rng));
+    const double bulge = unit(rng) < o.arc_fraction ? o.max_bulge * (2.0 * unit(rng) - 1.0) : 0.0;
+    out << (i ? "," : "") << "[" << o.center.x + r * std::cos(angle) << ","
+        << o.center.y + r * std::sin(angle) << "," << bulge << "]";
+  }
+  out << "]";
+  return out.str();
+}
+
+RandomPair random_pair(std::mt19937& rng, int moving_vertices, int fixed_vertices, bool holes) {
+  for (int attempt = 0;; ++attempt) {
+    RandomLoopOptions m{moving_vertices, 1.0, 0.4, 0.5, 0.35, {0.0, 0.0}};
+    RandomLoopOptions f{fixed_vertices, 3.0, 0.35, 0.5, 0.3, {0.0, 0.0}};
+    std::string fixed = "[" + random_loop_json(rng, f);
+    if (holes) {
+      RandomLoopOptions h{std::max(3, fixed_vertices / 2), 1.3, 0.2, 0.5, 0.3, {0.0, 0.0}};
+      fixed += "," + random_loop_json(rng, h);
+    }
+    fixed += "]";
+    const std::string json = R"({"name":"random","moving":{"loops":[)" + random_loop_json(rng, m) +
+                             R"(]},"fixed":{"loops":)" + fixed + "}}";
+    LoadResult r = parse_pair(json, "random");
+    if (r.ok()) return {std::move(*r.pair), json};
+    if (attempt > 1000)
+      throw std::runtime_error("random_pair: no valid pair: " + r.error->message());
+  }
+}
+
+}  // namespace cslice::testkit

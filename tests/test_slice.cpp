@@ -1,0 +1,178 @@
+// The slice against the direct placement test and against closed-form answers.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "cslice/classify.hpp"
+#include "cslice/slice.hpp"
+#include "support/random_parts.hpp"
+
+using namespace cslice;
+
+namespace {
+
+Pair load_example(const std::string& name) {
+  LoadResult r = load_pair(std::string(CSLICE_SOURCE_DIR) + "/examples/" + name + ".json");
+  if (!r.ok()) throw std::runtime_error(r.error->message());
+  return *r.pair;
+}
+
+// Checks membership in a free component against classify at random points around the
+// pair; points classify calls contact (within the tolerance band) may go either way.
+// Returns how many points were decisive.
+int check_against_classify(const Pair& pair, double theta, int points, std::mt19937& rng,
+                           const std::string& what) {
+  const Slice slice = compute_slice(pair, theta);
+  PlacementTester tester(pair);
+  // Every sample is strictly free: not blocked and clear of contact. (A pocket narrower than
+  // the tolerance is still a free component; classify's band may call its centre contact.)
+  for (const FreeComponent& c : slice.free_components) {
+    const Pose at{c.sample.x, c.sample.y, theta};
+    EXPECT_NE(tester.classify(at), Placement::blocked)
+        << what << " theta " << theta << ": sample of component " << c.id;
+    EXPECT_GT(tester.boundary_distance(at), pair.tol.geometric)
+        << what << " theta " << theta << ": sample of component " << c.id;
+  }
+  Box box = pair.fixed.box;
+  const double reach = std::max(std::fabs(pair.moving.box.lo.x), std::fabs(pair.moving.box.hi.x)) +
+                       std::max(std::fabs(pair.moving.box.lo.y), std::fabs(pair.moving.box.hi.y));
+  box = box.inflated(reach);
+  std::uniform_real_distribution<double> ux(box.lo.x, box.hi.x), uy(box.lo.y, box.hi.y);
+  int decisive = 0;
+  for (int i = 0; i < points; ++i) {
+    const Vec2 p{ux(rng), uy(rng)};
+    const Placement truth = tester.classify({p.x, p.y, theta});
+    if (truth == Placement::contact) continue;
+    ++decisive;
+    const int comp = slice.locate(p);
+    EXPECT_EQ(comp >= 0, truth == Placement::free)
+        << what << " theta " << theta << " point (" << p.x << ", " << p.y << "): classify says "
+        << to_string(truth) << ", slice component " << comp;
+    if (::testing::Test::HasFailure()) return decisive;
+  }
+  return decisive;
+}
+
+double peg_side(double theta) {
+  return 2.0 * (std::fabs(std::cos(theta)) + std::fabs(std::sin(theta)));
+}
+
+}  // namespace
+
+TEST(SliceAnalytic, DiscInSquareBoxIsASquareOfSideTwiceSMinusR) {
+  const Pair pair = load_example("disc-in-box");  // s = 3, r = 1
+  for (double theta : {-3.0, -1.0, 0.0, 0.4, 2.2}) {
+    const Slice s = compute_slice(pair, theta);
+    ASSERT_EQ(s.free_components.size(), 1u);
+    EXPECT_TRUE(s.free_components[0].bounded);
+    EXPECT_NEAR(s.free_components[0].area, 16.0, 1e-9);
+    EXPECT_EQ(s.contact_graph.nodes.size(), 4u);
+  }
+}
+
+TEST(SliceAnalytic, SquarePegInSquareHole) {
+  const Pair pair = load_example("square-peg-hole");  // peg side 2, hole side 3
+  for (double theta : {0.0, 0.2, 0.5, 0.785, 1.3, 2.0, -2.9}) {
+    const Slice s = compute_slice(pair, theta);
+    const double side = 3.0 - peg_side(theta);
+    int bounded = 0;
+    for (const FreeComponent& c : s.free_components) {
+      if (!c.bounded) continue;
+      ++bounded;
+      EXPECT_NEAR(c.area, side * side, 1e-9) << theta;
+    }
+    EXPECT_EQ(bounded, 1) << theta;
+  }
+}
+
+TEST(SliceAnalytic, CamBacklashIsTheClearanceSquared) {
+  const Pair pair = load_example("cam");  // breadth 10 in a 10.2 opening
+  for (double theta = -3.1; theta < 3.14; theta += 0.37) {
+    const Slice s = compute_slice(pair, theta);
+    ASSERT_EQ(s.free_components.size(), 1u) << theta;
+    EXPECT_NEAR(s.free_components[0].area, 0.04, 1e-9) << theta;
+  }
+}
+
+TEST(SliceDegenerate, PinInHoleOfItsOwnRadiusLeavesAContactPoint) {
+  const Pair pair = load_example("pin-exact-fit");
+  const Slice s = compute_slice(pair, 0.7);
+  ASSERT_EQ(s.degenerate.size(), 1u);
+  EXPECT_TRUE(s.degenerate[0].is_point);
+  EXPECT_EQ(classify(pair, {s.degenerate[0].curve.from.x, s.degenerate[0].curve.from.y, 0.7}),
+            Placement::contact);
+  for (const FreeComponent& c : s.free_components) EXPECT_FALSE(c.bounded);
+}
+
+TEST(SliceDegenerate, SquarePegInHoleOfItsOwnSizeLeavesAContactPoint) {
+  const std::string json = R"({"name":"snug","moving":{"loops":[[[-1,-1],[1,-1],[1,1],[-1,1]]]},
+    "fixed":{"loops":[[[-5,-5],[5,-5],[5,5],[-5,5]],[[-1,-1],[1,-1],[1,1],[-1,1]]]}})";
+  const Pair pair = *parse_pair(json, "snug").pair;
+  const Slice s = compute_slice(pair, 0.0);
+  ASSERT_EQ(s.degenerate.size(), 1u);
+  EXPECT_TRUE(s.degenerate[0].is_point);
+  EXPECT_NEAR(length(s.degenerate[0].curve.from), 0.0, 1e-9);
+}
+
+TEST(SliceDegenerate, PegInSlotOfItsOwnWidthLeavesAContactCurve) {
+  // A 2 x 2 peg in a slot 2 wide and 6 long: it slides along a line of length 4.
+  const std::string json = R"({"name":"slot","moving":{"loops":[[[-1,-1],[1,-1],[1,1],[-1,1]]]},
+    "fixed":{"loops":[[[-5,-5],[5,-5],[5,5],[-5,5]],[[-3,-1],[3,-1],[3,1],[-3,1]]]}})";
+  const Pair pair = *parse_pair(json, "slot").pair;
+  const Slice s = compute_slice(pair, 0.0);
+  double length_total = 0.0;
+  for (const DegenerateContact& d : s.degenerate)
+    if (!d.is_point) length_total += curve_length(d.curve);
+  EXPECT_NEAR(length_total, 4.0, 1e-9);
+}
+
+TEST(SliceDegenerate, TriangleInTriangularHoleOfItsOwnSize) {
+  // Three contact lines through one point, each alone blocking a half plane.
+  const std::string json = R"({"name":"tri","moving":{"loops":[[[0,0],[2,0],[1,1.5]]]},
+    "fixed":{"loops":[[[-5,-5],[6,-5],[6,6],[-5,6]],[[0,0],[2,0],[1,1.5]]]}})";
+  const Pair pair = *parse_pair(json, "tri").pair;
+  const Slice s = compute_slice(pair, 0.0);
+  ASSERT_EQ(s.degenerate.size(), 1u);
+  EXPECT_TRUE(s.degenerate[0].is_point);
+  EXPECT_NEAR(length(s.degenerate[0].curve.from), 0.0, 1e-9);
+}
+
+TEST(SliceDegenerate, ParallelEdgesSlidingGiveOverlappingContactSegments) {
+  // A square resting in a wider square hole at theta 0: the peg's edges are parallel to the
+  // hole's, so vertex/segment and segment/vertex contacts coincide along each wall.
+  const Pair pair = load_example("square-peg-hole");
+  const Slice s = compute_slice(pair, 0.0);
+  int bounded = 0;
+  for (const FreeComponent& c : s.free_components) {
+    if (!c.bounded) continue;
+    ++bounded;
+    EXPECT_NEAR(c.area, 1.0, 1e-9);
+    ASSERT_EQ(c.boundary.size(), 1u);
+    EXPECT_EQ(c.boundary[0].size(), 4u);  // four walls, each one merged edge
+  }
+  EXPECT_EQ(bounded, 1);
+}
+
+TEST(SliceOracle, PaperExamplesAgreeWithClassify) {
+  std::mt19937 rng(2026);
+  for (const char* name :
+       {"knee", "cam", "fixture", "fastener", "disc-half-plane", "square-peg-hole"}) {
+    const Pair pair = load_example(name);
+    int decisive = 0;
+    for (double theta = -3.0; theta < 3.15; theta += 0.5)
+      decisive += check_against_classify(pair, theta, 400, rng, name);
+    EXPECT_GT(decisive, 3000) << name;
+  }
+}
+
+TEST(SliceOracle, RandomCurvedPairsAgreeWithClassify) {
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<double> angle(-kPi, kPi);
+  for (int i = 0; i < 60; ++i) {
+    const testkit::RandomPair rp = testkit::random_pair(rng, 5 + i % 6, 6 + i % 9, i % 3 == 0);
+    for (int k = 0; k < 3; ++k) check_against_classify(rp.pair, angle(rng), 300, rng, rp.json);
+    if (HasFailure()) break;
+  }
+}
