@@ -37,9 +37,11 @@ struct ContactSegment {
 
 // A piece of a realizable contact segment: part of the free-space boundary, or a degenerate
 // piece of contact space with blocked space on both sides (a sliding fit).
+// Pieces listed in Slice::realizable keep their contact segment's direction (blocked side
+// on the left); pieces in a free component's boundary run the other way (free on the left).
 struct ContactPiece {
-  int segment = 0;  // contact segment id (the lowest, when several coincide)
-  Curve curve;
+  int segment = 0;  // contact segment id: the lowest of those that coincide along the piece
+  Curve curve;      // (all of them are nodes of the contact graph)
 };
 
 struct FreeComponent {
@@ -76,7 +78,9 @@ struct Slice {
   double theta = 0.0;
   std::vector<ContactSegment> contact_segments;
   std::vector<FreeComponent> free_components;
-  std::vector<ContactPiece> realizable;  // every realizable piece, boundary and degenerate
+  // Every realizable piece of positive length: free-space boundary and sliding fits.
+  // Degenerate points (perfect fits) are in `degenerate` only.
+  std::vector<ContactPiece> realizable;
   std::vector<DegenerateContact> degenerate;
   ContactGraph contact_graph;
   double epsilon = 0.0;  // the pair's geometric epsilon: locate's band around contact space

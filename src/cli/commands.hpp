@@ -29,5 +29,6 @@ Pose parse_pose_or_exit(const std::string& text, const std::string& what);
 void register_info(CLI::App& app);
 void register_classify(CLI::App& app);
 void register_render(CLI::App& app);
+void register_slice(CLI::App& app);
 
 }  // namespace cslice::cli

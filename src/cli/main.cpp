@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   cslice::cli::register_info(app);
   cslice::cli::register_classify(app);
   cslice::cli::register_render(app);
+  cslice::cli::register_slice(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,181 @@
+// `cslice slice PAIR.json --theta T [--json OUT] [--svg OUT] [--mark x,y]`: the slice of
+// configuration space at one orientation, as JSON (docs/slice-format.md), as an SVG picture,
+// or as a short summary on standard output. Every output is built in memory first and the
+// files are only written once everything has succeeded, so a failure leaves none behind.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <unistd.h>  // getpid, for unique temporary names
+
+#include "cli/commands.hpp"
+#include "cslice/render_svg.hpp"
+#include "cslice/slice.hpp"
+#include "cslice/slice_io.hpp"
+
+namespace cslice::cli {
+
+namespace {
+
+// An output path that means standard output.
+constexpr const char* kStdout = "-";
+
+struct SliceOptions {
+  std::string pair_path;
+  double theta = 0.0;
+  std::string json_path;
+  std::string svg_path;
+  std::string mark;
+  bool all_segments = false;
+};
+
+// "x,y" (or "x y"): two finite numbers.
+Vec2 parse_mark_or_exit(const std::string& text) {
+  std::string normalized = text;
+  for (char& ch : normalized)
+    if (ch == ',') ch = ' ';
+  std::istringstream in(normalized);
+  Vec2 p;
+  std::string extra;
+  if (!(in >> p.x >> p.y) || (in >> extra) || !is_finite(p)) {
+    throw ExitError(kExitBadInput, "--mark: expected two finite numbers x,y, got '" + text + "'");
+  }
+  return p;
+}
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+std::string point(Vec2 p) {
+  return "(" + num(p.x) + ", " + num(p.y) + ")";
+}
+
+std::string row(const char* label, const std::string& value) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%-21s", label);
+  return buf + value + "\n";
+}
+
+std::string summary_text(const Pair& pair, const Slice& slice, const std::optional<Vec2>& mark) {
+  const std::size_t realizable = realizable_segment_ids(slice).size();
+  int bounded = 0;
+  for (const FreeComponent& c : slice.free_components) bounded += c.bounded ? 1 : 0;
+  std::string out = row("pair", pair.name) + row("theta", num(slice.theta) + " rad");
+  out += row("contact segments", std::to_string(slice.contact_segments.size()) + " (" +
+                                     std::to_string(realizable) + " realizable)");
+  out += row("free components", std::to_string(slice.free_components.size()) + " (" +
+                                    std::to_string(bounded) + " bounded)");
+  out += row("degenerate contacts", std::to_string(slice.degenerate.size()));
+  out += row("contact graph edges", std::to_string(slice.contact_graph.edges.size()));
+  for (const FreeComponent& c : slice.free_components) {
+    const std::string area =
+        c.bounded ? "bounded, area " + num(c.area) + " " + pair.units + "^2" : "unbounded";
+    out += "component " + std::to_string(c.id) + ": " + area + ", sample " + point(c.sample) + "\n";
+  }
+  if (mark) {
+    const int where = slice.locate(*mark);
+    out += "mark " + point(*mark) + ": " +
+           (where < 0 ? std::string("blocked or in contact")
+                      : "free component " + std::to_string(where)) +
+           "\n";
+  }
+  return out;
+}
+
+// Writes to a temporary file beside `path`, so a failed write never leaves a half file.
+std::string write_temp(const std::string& path, const std::string& text) {
+  const std::string temp = path + ".tmp" + std::to_string(::getpid());
+  std::ofstream out(temp, std::ios::binary);
+  out << text;
+  out.close();
+  if (!out) {
+    std::error_code ignored;
+    std::filesystem::remove(temp, ignored);
+    throw ExitError(kExitBadInput, "cannot write '" + path + "'");
+  }
+  return temp;
+}
+
+// All outputs or none: every file goes to a temporary first and is renamed into place only
+// when all of them were written.
+void write_outputs(const std::vector<std::pair<std::string, std::string>>& outputs) {
+  std::vector<std::pair<std::string, std::string>> temps;  // (temp, final)
+  try {
+    for (const auto& [path, text] : outputs) temps.emplace_back(write_temp(path, text), path);
+  } catch (...) {
+    std::error_code ignored;
+    for (const auto& t : temps) std::filesystem::remove(t.first, ignored);
+    throw;
+  }
+  for (const auto& [temp, path] : temps) {
+    std::error_code error;
+    std::filesystem::rename(temp, path, error);
+    if (error) throw ExitError(kExitBadInput, "cannot write '" + path + "': " + error.message());
+  }
+}
+
+void run_slice(const SliceOptions& options) {
+  const Pair pair = load_pair_or_exit(options.pair_path);
+  if (!std::isfinite(options.theta))
+    throw ExitError(kExitBadInput, "--theta: expected a finite angle in radians");
+  if (options.json_path == kStdout && options.svg_path == kStdout)
+    throw ExitError(kExitBadInput, "--json and --svg cannot both go to standard output");
+  SlicePictureOptions picture;
+  picture.show_all_segments = options.all_segments;
+  if (!options.mark.empty()) picture.mark = parse_mark_or_exit(options.mark);
+  const Slice slice = compute_slice(pair, options.theta);
+
+  std::vector<std::pair<std::string, std::string>> outputs;
+  if (!options.json_path.empty())
+    outputs.emplace_back(options.json_path, slice_to_json(pair, slice));
+  if (!options.svg_path.empty())
+    outputs.emplace_back(options.svg_path, render_slice_svg(pair, slice, picture));
+  if (outputs.empty()) {
+    std::cout << summary_text(pair, slice, picture.mark) << std::flush;
+    return;
+  }
+  // Standard output last: it cannot be taken back if a file then failed.
+  std::string to_stdout;
+  std::erase_if(outputs, [&](const auto& o) {
+    if (o.first != kStdout) return false;
+    to_stdout = o.second;
+    return true;
+  });
+  write_outputs(outputs);
+  std::cout << to_stdout << std::flush;
+}
+
+}  // namespace
+
+void register_slice(CLI::App& app) {
+  auto options = std::make_shared<SliceOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "slice",
+      "Compute the configuration-space slice at one orientation: contact segments, free\n"
+      "components and the contact graph. Without --json or --svg, prints a summary.");
+  cmd->add_option("pair", options->pair_path, "Pair file (JSON, see docs/pair-format.md)")
+      ->required();
+  cmd->add_option("--theta", options->theta, "Orientation of the moving part, radians")->required();
+  cmd->add_option("--json", options->json_path,
+                  "Write the slice as JSON (docs/slice-format.md); - for standard output");
+  cmd->add_option("--svg", options->svg_path,
+                  "Write a picture of the slice as SVG; - for standard output");
+  cmd->add_option("--mark", options->mark,
+                  "Mark the configuration x,y in the SVG and say which component holds it");
+  cmd->add_flag("--all-segments", options->all_segments,
+                "In the SVG, also draw contact segments that bound no free space (dashed)");
+  cmd->callback([options] { run_slice(*options); });
+}
+
+}  // namespace cslice::cli
