@@ -96,6 +96,15 @@ TEST(SliceAnalytic, CamBacklashIsTheClearanceSquared) {
   }
 }
 
+TEST(SliceAnalytic, DiscAgainstABlockBlocksTheRoundedRectangle) {
+  const Pair pair = load_example("disc-half-plane");  // r = 1, block 10 x 4
+  for (double theta : {0.0, 1.0, -2.5}) {
+    const Slice s = compute_slice(pair, theta);
+    EXPECT_NEAR(s.blocked_area, 12.0 * 6.0 - (4.0 - kPi), 1e-9) << theta;
+  }
+  EXPECT_TRUE(std::isinf(compute_slice(load_example("disc-in-box"), 0.3).blocked_area));
+}
+
 TEST(SliceDegenerate, PinInHoleOfItsOwnRadiusLeavesAContactPoint) {
   const Pair pair = load_example("pin-exact-fit");
   const Slice s = compute_slice(pair, 0.7);
@@ -175,4 +184,21 @@ TEST(SliceOracle, RandomCurvedPairsAgreeWithClassify) {
     for (int k = 0; k < 3; ++k) check_against_classify(rp.pair, angle(rng), 300, rng, rp.json);
     if (HasFailure()) break;
   }
+}
+
+TEST(SliceOracle, JaggedStarsWithTinyFacesKeepTheirFreeSpace) {
+  // 250-vertex jagged stars give thousands of contact segments and faces of area ~1e-13;
+  // every cycle but a component's outer one must bound a face, however small.
+  std::mt19937 rng(5);
+  const testkit::RandomLoopOptions m{250, 1.0, 0.05, 0.5, 0.02, {0, 0}};
+  const testkit::RandomLoopOptions f{250, 3.0, 0.05, 0.5, 0.02, {0, 0}};
+  const std::string json = R"({"name":"jagged","moving":{"loops":[)" +
+                           testkit::random_loop_json(rng, m) + R"(]},"fixed":{"loops":[)" +
+                           testkit::random_loop_json(rng, f) + "]}}";
+  const Pair pair = *parse_pair(json, "jagged").pair;
+  const Slice s = compute_slice(pair, 0.3);
+  ASSERT_EQ(s.free_components.size(), 1u);
+  EXPECT_FALSE(s.free_components[0].bounded);
+  std::mt19937 points(8);
+  check_against_classify(pair, 0.3, 300, points, "jagged");
 }

@@ -83,6 +83,8 @@ struct Slice {
   std::vector<ContactPiece> realizable;
   std::vector<DegenerateContact> degenerate;
   ContactGraph contact_graph;
+  // Area of blocked space; infinite when it is unbounded (the fixed part is an enclosure).
+  double blocked_area = 0.0;
   double epsilon = 0.0;  // the pair's geometric epsilon: locate's band around contact space
 
   // The free component whose interior holds p, or -1 (blocked, or within the geometric

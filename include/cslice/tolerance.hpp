@@ -29,11 +29,6 @@ struct Tolerances {
   // Angles closer than this are equal (radians): the geometric epsilon seen at unit lever
   // arm of the pair's size, so that turning by it moves no point by more than `geometric`.
   double angular = kRelativeGeometricEpsilon;
-  // Smallest area (length^2) a cycle of an arrangement must enclose to count as a region
-  // rather than a degenerate, zero-area cycle (a dangling curve traversed both ways): the
-  // round-off of summing signed areas of many curves is about 1e-16 * size^2 per curve, so
-  // this is the geometric epsilon squared, raised by 1e4.
-  double area = 1e4 * kRelativeGeometricEpsilon * kRelativeGeometricEpsilon;
 };
 
 // Derives every tolerance from the pair's size and the user's tolerance (if any).

@@ -16,6 +16,11 @@ double loop_signed_area(std::span<const Curve> edges);
 // boundary give either answer.
 bool loop_encloses(std::span<const Curve> edges, Vec2 p);
 
+// Whether one curve of a closed walk toggles the even-odd parity of p (its chord crossed by
+// the rightward ray from p, or p inside its circular segment; a full circle: inside its
+// disc). loop_encloses is the parity of these over the walk.
+bool toggles_parity(const Curve& c, Vec2 p);
+
 // Distance from p to the nearest curve of the sequence.
 double distance_to_curves(std::span<const Curve> edges, Vec2 p);
 

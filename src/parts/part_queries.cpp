@@ -50,23 +50,20 @@ double loop_signed_area(std::span<const Curve> edges) {
 
 // The region bounded by chords and arcs is the chord polygon with every arc's circular
 // segment toggled in or out, so parity of (chord crossings + segments containing p) decides.
+bool toggles_parity(const Curve& c, Vec2 p) {
+  if (c.from == c.to) {
+    // A full circle: its chord is a point and its segment the whole disc.
+    return c.is_full_circle() && length_squared(p - c.center) < c.radius * c.radius;
+  }
+  const int side = side_of_chord(c.from, c.to, p);
+  return ray_crosses_chord(c.from, c.to, p, side) !=
+         (c.is_arc() && in_circular_segment(c, p, side));
+}
+
 bool loop_encloses(std::span<const Curve> edges, Vec2 p) {
-  if (edges.size() == 1 && edges.front().is_full_circle()) {
-    const Curve& c = edges.front();
-    return length_squared(p - c.center) < c.radius * c.radius;
-  }
   bool inside = false;
-  for (const Curve& c : edges) {
-    if (c.from == c.to) {
-      // A full circle inside a longer cycle: its chord is a point, its segment the disc.
-      if (c.is_full_circle() && length_squared(p - c.center) < c.radius * c.radius)
-        inside = !inside;
-      continue;
-    }
-    const int side = side_of_chord(c.from, c.to, p);
-    if (ray_crosses_chord(c.from, c.to, p, side)) inside = !inside;
-    if (c.is_arc() && in_circular_segment(c, p, side)) inside = !inside;
-  }
+  for (const Curve& c : edges)
+    if (toggles_parity(c, p)) inside = !inside;
   return inside;
 }
 

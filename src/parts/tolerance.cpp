@@ -10,7 +10,6 @@ Tolerances make_tolerances(double size, std::optional<double> user_tolerance) {
   t.geometric = kRelativeGeometricEpsilon * size;
   t.contact = std::max(user_tolerance.value_or(kDefaultRelativeTolerance * size), t.geometric);
   t.angular = kRelativeGeometricEpsilon;
-  t.area = 1e4 * t.geometric * t.geometric;
   return t;
 }
 

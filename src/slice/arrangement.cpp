@@ -79,31 +79,43 @@ std::vector<SplitPoint> split_points(const std::vector<Curve>& curves, double ep
 
 // Merges split points closer than eps (transitively) into vertices; returns the vertex of
 // each split point and fills the vertex positions (each the first point of its cluster).
+// Points are bucketed in cells of side 2 eps, sorted by cell, and compared with the points
+// of the neighbouring cells found by binary search.
 std::vector<int> merge_points(const std::vector<SplitPoint>& splits, double eps,
                               std::vector<Vec2>& vertices) {
   const double cell = 2.0 * eps;
-  auto key = [&](long long ix, long long iy) { return ix * 73856093LL ^ iy * 19349663LL; };
-  std::unordered_map<long long, std::vector<int>> grid;
+  struct Bucket {
+    long long ix, iy;
+    int index;
+  };
+  std::vector<Bucket> buckets(splits.size());
+  for (size_t i = 0; i < splits.size(); ++i)
+    buckets[i] = {std::llround(std::floor(splits[i].p.x / cell)),
+                  std::llround(std::floor(splits[i].p.y / cell)), int(i)};
+  auto less = [](const Bucket& a, const Bucket& b) {
+    return a.ix != b.ix ? a.ix < b.ix : (a.iy != b.iy ? a.iy < b.iy : a.index < b.index);
+  };
+  std::sort(buckets.begin(), buckets.end(), less);
   UnionFind uf(splits.size());
-  for (size_t i = 0; i < splits.size(); ++i) {
-    const long long ix = std::llround(std::floor(splits[i].p.x / cell));
-    const long long iy = std::llround(std::floor(splits[i].p.y / cell));
-    for (long long dx = -1; dx <= 1; ++dx)
+  for (const Bucket& b : buckets) {
+    for (long long dx = 0; dx <= 1; ++dx) {
       for (long long dy = -1; dy <= 1; ++dy) {
-        auto it = grid.find(key(ix + dx, iy + dy));
-        if (it == grid.end()) continue;
-        for (int j : it->second)
-          if (distance(splits[i].p, splits[j].p) <= eps) uf.unite(int(i), j);
+        if (dx == 0 && dy < 0) continue;  // each neighbouring pair of cells once
+        const Bucket key{b.ix + dx, b.iy + dy, dx == 0 && dy == 0 ? b.index + 1 : 0};
+        for (auto it = std::lower_bound(buckets.begin(), buckets.end(), key, less);
+             it != buckets.end() && it->ix == key.ix && it->iy == key.iy; ++it)
+          if (distance(splits[b.index].p, splits[it->index].p) <= eps) uf.unite(b.index, it->index);
       }
-    grid[key(ix, iy)].push_back(int(i));
+    }
   }
-  std::vector<int> vertex_of(splits.size());
-  std::unordered_map<int, int> root_vertex;
+  std::vector<int> vertex_of(splits.size()), vertex_of_root(splits.size(), -1);
   for (size_t i = 0; i < splits.size(); ++i) {
     const int root = uf.find(int(i));
-    auto [it, added] = root_vertex.emplace(root, int(vertices.size()));
-    if (added) vertices.push_back(splits[root].p);
-    vertex_of[i] = it->second;
+    if (vertex_of_root[root] < 0) {
+      vertex_of_root[root] = int(vertices.size());
+      vertices.push_back(splits[root].p);
+    }
+    vertex_of[i] = vertex_of_root[root];
   }
   return vertex_of;
 }
@@ -246,40 +258,86 @@ void trace_cycles(Arrangement& arr) {
   }
 }
 
-std::vector<Curve> cycle_curves(const Arrangement& arr, const ArrangementCycle& c) {
-  std::vector<Curve> curves;
-  for (int h : c.half_edges) curves.push_back(arr.half_curve(h));
-  return curves;
+// Even-odd containment of many points (sorted by y) in one cycle at once: each curve toggles
+// only the points within its own y-range, so a long cycle costs its length plus the points
+// near each curve, not its length times the points.
+std::vector<char> cycle_encloses(const Arrangement& arr, const ArrangementCycle& c,
+                                 const std::vector<Vec2>& points_by_y) {
+  std::vector<char> inside(points_by_y.size(), false);
+  auto y_less = [](const Vec2& p, double y) { return p.y < y; };
+  for (int h : c.half_edges) {
+    const Curve& curve = arr.edges[h / 2].curve;  // parity does not depend on direction
+    const Box box = bounding_box(curve);
+    auto it = std::lower_bound(points_by_y.begin(), points_by_y.end(), box.lo.y, y_less);
+    for (; it != points_by_y.end() && it->y <= box.hi.y; ++it)
+      if (toggles_parity(curve, *it)) inside[it - points_by_y.begin()] ^= 1;
+  }
+  return inside;
 }
 
-// Bounded faces come from counterclockwise cycles; every other cycle bounds a connected
-// component from outside and belongs to the smallest bounded face of another component
-// around it, or to the unbounded face.
-void assign_faces(Arrangement& arr, double area_eps) {
-  arr.faces.assign(1, ArrangementFace{});
-  std::vector<int> outer;
+// Every connected component has exactly one outer cycle, the one of least signed area (a
+// tree's only cycle has area 0); each of its other cycles bounds a face of its own, however
+// small, so no area threshold decides topology. An outer cycle belongs to the smallest
+// bounded face of another component around it, or to the unbounded face.
+void assign_faces(Arrangement& arr) {
+  std::unordered_map<int, int> outer_of_component;
   for (size_t c = 0; c < arr.cycles.size(); ++c) {
-    if (arr.cycles[c].area <= area_eps) continue;
+    auto [it, added] = outer_of_component.emplace(arr.cycles[c].component, int(c));
+    if (!added && arr.cycles[c].area < arr.cycles[it->second].area) it->second = int(c);
+  }
+  arr.faces.assign(1, ArrangementFace{});
+  std::vector<int> bounded;
+  for (size_t c = 0; c < arr.cycles.size(); ++c) {
+    if (outer_of_component[arr.cycles[c].component] == int(c)) continue;
     arr.cycles[c].face = int(arr.faces.size());
     arr.faces.push_back({true, {int(c)}});
-    outer.push_back(int(c));
+    bounded.push_back(int(c));
   }
-  std::vector<std::vector<Curve>> outer_curves;
-  for (int c : outer) outer_curves.push_back(cycle_curves(arr, arr.cycles[c]));
-  for (size_t c = 0; c < arr.cycles.size(); ++c) {
-    ArrangementCycle& hole = arr.cycles[c];
-    if (hole.face >= 0) continue;
-    const Vec2 p = arr.vertices[arr.origin(hole.half_edges.front())];
-    int best = -1;
-    for (size_t k = 0; k < outer.size(); ++k) {
-      const ArrangementCycle& o = arr.cycles[outer[k]];
-      if (o.component == hole.component || !o.box.overlaps(hole.box)) continue;
-      if (best >= 0 && o.area >= arr.cycles[outer[best]].area) continue;
-      if (loop_encloses(outer_curves[k], p)) best = int(k);
+  // Each outer cycle is represented by its first vertex; its face is the smallest bounded
+  // cycle of another component enclosing that point. Cycles are tried smallest first, each
+  // against the still unplaced points in its box.
+  std::sort(bounded.begin(), bounded.end(),
+            [&](int a, int b) { return arr.cycles[a].area < arr.cycles[b].area; });
+  struct Probe {
+    Vec2 p;
+    int cycle;
+  };
+  std::vector<Probe> probes;
+  for (const auto& [component, c] : outer_of_component) {
+    arr.cycles[c].face = 0;
+    probes.push_back({arr.vertices[arr.origin(arr.cycles[c].half_edges.front())], c});
+  }
+  std::sort(probes.begin(), probes.end(),
+            [](const Probe& a, const Probe& b) { return a.p.y < b.p.y; });
+  std::vector<char> placed(probes.size(), false);
+  std::vector<int> candidates;
+  std::vector<Vec2> points;
+  for (int k : bounded) {
+    const ArrangementCycle& o = arr.cycles[k];
+    candidates.clear();
+    points.clear();
+    auto it = std::lower_bound(probes.begin(), probes.end(), o.box.lo.y,
+                               [](const Probe& a, double y) { return a.p.y < y; });
+    for (; it != probes.end() && it->p.y <= o.box.hi.y; ++it) {
+      const size_t i = it - probes.begin();
+      if (placed[i] || it->p.x < o.box.lo.x || it->p.x > o.box.hi.x ||
+          arr.cycles[it->cycle].component == o.component)
+        continue;
+      candidates.push_back(int(i));
+      points.push_back(it->p);
     }
-    hole.face = best < 0 ? 0 : arr.cycles[outer[best]].face;
-    arr.faces[hole.face].cycles.push_back(int(c));
+    if (candidates.empty()) continue;
+    const std::vector<char> inside = cycle_encloses(arr, o, points);
+    for (size_t j = 0; j < candidates.size(); ++j) {
+      if (!inside[j]) continue;
+      placed[candidates[j]] = true;
+      arr.cycles[probes[candidates[j]].cycle].face = o.face;
+    }
   }
+  // Attach outer cycles in cycle order, so face cycle lists do not depend on hashing.
+  for (size_t c = 0; c < arr.cycles.size(); ++c)
+    if (outer_of_component[arr.cycles[c].component] == int(c))
+      arr.faces[arr.cycles[c].face].cycles.push_back(int(c));
 }
 
 }  // namespace
@@ -303,7 +361,7 @@ Arrangement build_arrangement(const std::vector<Curve>& curves, const std::vecto
   order_outgoing(arr, tol.geometric, tol.angular);
   link_half_edges(arr);
   trace_cycles(arr);
-  assign_faces(arr, tol.area);
+  assign_faces(arr);
   return arr;
 }
 

@@ -29,7 +29,7 @@ struct ArrangementEdge {
 // A closed walk of half-edges with its face on the left.
 struct ArrangementCycle {
   std::vector<int> half_edges;
-  double area = 0.0;  // signed: > 0 the outer boundary of a bounded face
+  double area = 0.0;  // signed: counterclockwise (> 0) around a bounded face
   Box box;
   int face = -1;
   int component = -1;  // connected component of the graph

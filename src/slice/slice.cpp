@@ -89,18 +89,23 @@ class SliceBuilder {
 
   // Whether every sector around v is blocked by contact segments ending at or passing
   // through v: only then can v itself be a contact configuration with no free space near.
-  // A label blocks the sector on its blocked side; two labels leaving v in opposite
-  // directions with their blocked sides on one side (one contact curve continuing through v,
-  // possibly as two segments meeting end to end) block the whole half plane on that side.
+  // A label blocks the side of its curve it faces; near v that covers a sector narrower
+  // than a half turn beside it, while a wider sector (a dead end's whole neighbourhood)
+  // needs blocking from both of its sides. Two labels leaving v in opposite directions with
+  // their blocked sides on one side (one contact curve continuing through v, possibly as
+  // two segments meeting end to end) block the whole half plane on that side.
   bool sectors_explained_locally(int v) const {
     const std::vector<int>& out = arr_.outgoing[v];
     const int d = int(out.size());
-    std::vector<char> explained(d, false);
     std::vector<Vec2> dir(d);
+    for (int i = 0; i < d; ++i) dir[i] = arr_.direction(out[i]);
+    std::vector<char> explained(d, false);
     for (int i = 0; i < d; ++i) {
-      dir[i] = arr_.direction(out[i]);
-      for (const EdgeLabel& l : arr_.edges[out[i] / 2].labels)
-        explained[Arrangement::left_is_blocked(out[i], l) ? i : (i - 1 + d) % d] = true;
+      const int next = (i + 1) % d;
+      const bool from_cw_side = has_label_blocking(out[i], true);
+      const bool from_ccw_side = has_label_blocking(out[next], false);
+      const bool narrow = d > 1 && cross(dir[i], dir[next]) > 0.0;
+      explained[i] = narrow ? (from_cw_side || from_ccw_side) : (from_cw_side && from_ccw_side);
     }
     for (int i = 0; i < d; ++i) {
       for (int j = 0; j < d; ++j) {
@@ -125,13 +130,13 @@ class SliceBuilder {
       const std::vector<int>& out = arr_.outgoing[v];
       if (out.empty()) continue;
       bool all_blocked = true;
-      std::vector<int> ids;
-      for (int h : out) {
+      for (int h : out)
         all_blocked = all_blocked && blocked_[arr_.face_of(h)] && !realizable_[h / 2];
-        for (int id : label_ids(h / 2)) ids.push_back(id);
-      }
       if (!all_blocked || !sectors_explained_locally(int(v))) continue;
       if (blocked_at(arr_.vertices[v])) continue;
+      std::vector<int> ids;
+      for (int h : out)
+        for (const EdgeLabel& l : arr_.edges[h / 2].labels) ids.push_back(l.segment);
       std::sort(ids.begin(), ids.end());
       ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
       add_degenerate_point(arr_.vertices[v], std::move(ids));
@@ -169,21 +174,33 @@ class SliceBuilder {
     for (size_t e = 0; e < arr_.edges.size(); ++e)
       if (realizable_[e]) slice_.realizable.push_back(piece_of_half_edge(int(2 * e)));
     for (size_t f = 0; f < arr_.faces.size(); ++f) {
-      if (blocked_[f]) continue;
+      if (blocked_[f]) {
+        slice_.blocked_area += face_area(int(f));
+        continue;
+      }
       FreeComponent comp;
       comp.id = int(slice_.free_components.size());
       comp.bounded = arr_.faces[f].bounded;
       comp.sample = samples_[f];
-      double area = 0.0;
       for (int c : arr_.faces[f].cycles) {
-        area += arr_.cycles[c].area;
         std::vector<ContactPiece> cycle;
         for (int h : arr_.cycles[c].half_edges) cycle.push_back(piece_of_half_edge(h));
         comp.boundary.push_back(std::move(cycle));
       }
-      comp.area = comp.bounded ? area : std::numeric_limits<double>::quiet_NaN();
+      comp.area = face_area(int(f));
       slice_.free_components.push_back(std::move(comp));
     }
+  }
+
+  // Outer cycle plus (negative) hole cycles; NaN for the unbounded face when free, infinity
+  // when blocked.
+  double face_area(int f) const {
+    if (!arr_.faces[f].bounded)
+      return blocked_[f] ? std::numeric_limits<double>::infinity()
+                         : std::numeric_limits<double>::quiet_NaN();
+    double area = 0.0;
+    for (int c : arr_.faces[f].cycles) area += arr_.cycles[c].area;
+    return area;
   }
 
   void build_contact_graph() {
