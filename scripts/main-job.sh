@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# The main job on the bundled examples: installs dependencies (as root), builds cslice, and
+# writes for every example its description (info), a picture of the placed pair and of its
+# configuration-space slice into out/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$(nproc)" --target cslice_cli
+mkdir -p out
+cslice=build/cslice
+# A telling configuration per example (x,y,theta); the analytic cases use their centre.
+declare -A pose=(
+  [knee]="5,-3,0.5" [cam]="0.885,-1.25,0.3" [fixture]="2.1,-0.7,0" [fastener]="0,6,1.5707963"
+  [disc-in-box]="0.5,0.5,0" [square-peg-hole]="0,0,0.3" [disc-half-plane]="0,4,0"
+  [pin-exact-fit]="0,0,0"
+)
+for pair in examples/*.json; do
+  name=$(basename "$pair" .json)
+  at=${pose[$name]:-0,0,0}
+  theta=${at##*,}
+  echo "== $name"
+  "$cslice" info "$pair"
+  "$cslice" render "$pair" --at "$at" -o "out/$name.svg"
+  "$cslice" slice "$pair" --theta "$theta" --json "out/$name-slice.json" --svg "out/$name-slice.svg"
+  echo "   pictures: out/$name.svg, out/$name-slice.svg; slice data: out/$name-slice.json"
+done
