@@ -58,14 +58,18 @@ void finish_kind(Intersection& r) {
 
 // Adds endpoint touches that the closed-form solution may have lost to round-off.
 void add_endpoint_touches(Intersection& r, const Curve& a, const Curve& b, double eps) {
+  const Box box_a = bounding_box(a).inflated(eps), box_b = bounding_box(b).inflated(eps);
+  auto in = [](const Box& box, Vec2 p) {
+    return p.x >= box.lo.x && p.x <= box.hi.x && p.y >= box.lo.y && p.y <= box.hi.y;
+  };
   for (double ta : {0.0, 1.0}) {
     const Vec2 p = point_at(a, ta);
-    if (distance_to_curve(b, p) <= eps)
+    if (in(box_b, p) && distance_to_curve(b, p) <= eps)
       add_hit(r, point_hit(p, ta, closest_parameter(b, p), false), eps);
   }
   for (double tb : {0.0, 1.0}) {
     const Vec2 p = point_at(b, tb);
-    if (distance_to_curve(a, p) <= eps)
+    if (in(box_a, p) && distance_to_curve(a, p) <= eps)
       add_hit(r, point_hit(p, closest_parameter(a, p), tb, false), eps);
   }
 }

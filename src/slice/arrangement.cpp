@@ -79,34 +79,19 @@ std::vector<SplitPoint> split_points(const std::vector<Curve>& curves, double ep
 
 // Merges split points closer than eps (transitively) into vertices; returns the vertex of
 // each split point and fills the vertex positions (each the first point of its cluster).
-// Points are bucketed in cells of side 2 eps, sorted by cell, and compared with the points
-// of the neighbouring cells found by binary search.
+// A sweep in x compares each point with the following ones less than eps further right.
 std::vector<int> merge_points(const std::vector<SplitPoint>& splits, double eps,
                               std::vector<Vec2>& vertices) {
-  const double cell = 2.0 * eps;
-  struct Bucket {
-    long long ix, iy;
-    int index;
-  };
-  std::vector<Bucket> buckets(splits.size());
-  for (size_t i = 0; i < splits.size(); ++i)
-    buckets[i] = {std::llround(std::floor(splits[i].p.x / cell)),
-                  std::llround(std::floor(splits[i].p.y / cell)), int(i)};
-  auto less = [](const Bucket& a, const Bucket& b) {
-    return a.ix != b.ix ? a.ix < b.ix : (a.iy != b.iy ? a.iy < b.iy : a.index < b.index);
-  };
-  std::sort(buckets.begin(), buckets.end(), less);
+  std::vector<int> order(splits.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return splits[a].p.x != splits[b].p.x ? splits[a].p.x < splits[b].p.x : a < b;
+  });
   UnionFind uf(splits.size());
-  for (const Bucket& b : buckets) {
-    for (long long dx = 0; dx <= 1; ++dx) {
-      for (long long dy = -1; dy <= 1; ++dy) {
-        if (dx == 0 && dy < 0) continue;  // each neighbouring pair of cells once
-        const Bucket key{b.ix + dx, b.iy + dy, dx == 0 && dy == 0 ? b.index + 1 : 0};
-        for (auto it = std::lower_bound(buckets.begin(), buckets.end(), key, less);
-             it != buckets.end() && it->ix == key.ix && it->iy == key.iy; ++it)
-          if (distance(splits[b.index].p, splits[it->index].p) <= eps) uf.unite(b.index, it->index);
-      }
-    }
+  for (size_t i = 0; i < order.size(); ++i) {
+    const Vec2 p = splits[order[i]].p;
+    for (size_t j = i + 1; j < order.size() && splits[order[j]].p.x - p.x <= eps; ++j)
+      if (distance(p, splits[order[j]].p) <= eps) uf.unite(order[i], order[j]);
   }
   std::vector<int> vertex_of(splits.size()), vertex_of_root(splits.size(), -1);
   for (size_t i = 0; i < splits.size(); ++i) {
@@ -128,22 +113,40 @@ Curve piece_of(const Curve& c, double t0, double t1, Vec2 from, Vec2 to) {
   return piece;
 }
 
-// Adds an edge, or merges it into a coincident one (same ends, same midpoint).
-void add_edge(Arrangement& arr, std::unordered_map<long long, std::vector<int>>& by_ends,
-              ArrangementEdge e, double eps) {
-  const long long key = (long long)std::min(e.u, e.v) << 32 | std::max(e.u, e.v);
-  const Vec2 mid = point_at(e.curve, 0.5);
-  for (int other : by_ends[key]) {
-    ArrangementEdge& o = arr.edges[other];
-    if (distance(point_at(o.curve, 0.5), mid) > eps) continue;
+// Merges coincident edges (same ends, same midpoint) into the first of them, which then
+// carries every label. Candidates share their pair of end vertices, found by sorting.
+void merge_coincident_edges(Arrangement& arr, std::vector<ArrangementEdge>& pieces, double eps) {
+  std::vector<int> order(pieces.size());
+  std::iota(order.begin(), order.end(), 0);
+  auto ends = [&](int i) {
+    return std::make_pair(std::min(pieces[i].u, pieces[i].v), std::max(pieces[i].u, pieces[i].v));
+  };
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return ends(a) != ends(b) ? ends(a) < ends(b) : a < b; });
+  std::vector<int> kept(pieces.size(), -1);  // piece -> arrangement edge
+  for (size_t i = 0; i < order.size(); ++i) {
+    ArrangementEdge& e = pieces[order[i]];
+    const Vec2 mid = point_at(e.curve, 0.5);
+    int into = -1;
+    for (size_t j = i; j-- > 0 && ends(order[j]) == ends(order[i]);) {
+      const ArrangementEdge& o = arr.edges[kept[order[j]]];
+      if (kept[order[j]] >= 0 && distance(point_at(o.curve, 0.5), mid) <= eps) {
+        into = kept[order[j]];
+        break;
+      }
+    }
+    if (into < 0) {
+      kept[order[i]] = int(arr.edges.size());
+      arr.edges.push_back(std::move(e));
+      continue;
+    }
+    ArrangementEdge& o = arr.edges[into];
+    kept[order[i]] = into;
     const bool same_way =
         o.u == e.u && o.v == e.v && (e.u != e.v || o.curve.sweep * e.curve.sweep > 0);
     for (EdgeLabel l : e.labels)
       o.labels.push_back({l.segment, same_way ? l.blocked_left : !l.blocked_left});
-    return;
   }
-  by_ends[key].push_back(int(arr.edges.size()));
-  arr.edges.push_back(std::move(e));
 }
 
 void build_edges(Arrangement& arr, const std::vector<Curve>& curves, const std::vector<int>& ids,
@@ -151,7 +154,7 @@ void build_edges(Arrangement& arr, const std::vector<Curve>& curves, const std::
                  double eps) {
   std::vector<std::vector<int>> per_curve(curves.size());
   for (size_t i = 0; i < splits.size(); ++i) per_curve[splits[i].curve].push_back(int(i));
-  std::unordered_map<long long, std::vector<int>> by_ends;
+  std::vector<ArrangementEdge> pieces;
   for (size_t c = 0; c < curves.size(); ++c) {
     auto& list = per_curve[c];
     std::sort(list.begin(), list.end(), [&](int a, int b) { return splits[a].t < splits[b].t; });
@@ -166,12 +169,14 @@ void build_edges(Arrangement& arr, const std::vector<Curve>& curves, const std::
       e.tangent_u = tangent_at(curves[c], splits[a].t);
       e.tangent_v = tangent_at(curves[c], splits[b].t);
       e.labels.push_back({ids[c], true});
-      add_edge(arr, by_ends, std::move(e), eps);
+      pieces.push_back(std::move(e));
     }
   }
+  merge_coincident_edges(arr, pieces, eps);
 }
 
 struct Direction {
+  int vertex;
   int half_edge;
   double angle;
   double curvature;
@@ -190,27 +195,28 @@ bool curvature_overrides(const Direction& a, const Direction& b, double eps, dou
 // Orders the half-edges leaving each vertex counterclockwise by tangent, ties (tangent
 // curves) broken by curvature: the one turning left comes later.
 void order_outgoing(Arrangement& arr, double eps, double angular_eps) {
-  std::vector<std::vector<Direction>> dirs(arr.vertices.size());
+  std::vector<Direction> dirs;
+  dirs.reserve(2 * arr.edges.size());
   for (size_t e = 0; e < arr.edges.size(); ++e) {
     const ArrangementEdge& edge = arr.edges[e];
     const Vec2 t0 = edge.tangent_u, t1 = -edge.tangent_v;
     const double k = signed_curvature(edge.curve);
-    dirs[edge.u].push_back({int(2 * e), std::atan2(t0.y, t0.x), k});
-    dirs[edge.v].push_back({int(2 * e + 1), std::atan2(t1.y, t1.x), -k});
+    dirs.push_back({edge.u, int(2 * e), std::atan2(t0.y, t0.x), k});
+    dirs.push_back({edge.v, int(2 * e + 1), std::atan2(t1.y, t1.x), -k});
   }
+  for (Direction& x : dirs)
+    if (x.angle > kPi - angular_eps) x.angle -= kTwoPi;  // one representative for +-pi
+  std::sort(dirs.begin(), dirs.end(), [](const Direction& a, const Direction& b) {
+    return a.vertex != b.vertex ? a.vertex < b.vertex : a.angle < b.angle;
+  });
+  // Insertion pass: nearly sorted already, only tangent neighbours move.
+  for (size_t i = 1; i < dirs.size(); ++i)
+    for (size_t j = i; j > 0 && dirs[j - 1].vertex == dirs[j].vertex &&
+                       curvature_overrides(dirs[j - 1], dirs[j], eps, angular_eps);
+         --j)
+      std::swap(dirs[j - 1], dirs[j]);
   arr.outgoing.assign(arr.vertices.size(), {});
-  for (size_t v = 0; v < dirs.size(); ++v) {
-    auto& d = dirs[v];
-    for (Direction& x : d)
-      if (x.angle > kPi - angular_eps) x.angle -= kTwoPi;  // one representative for +-pi
-    std::sort(d.begin(), d.end(),
-              [](const Direction& a, const Direction& b) { return a.angle < b.angle; });
-    // Insertion pass: nearly sorted already, only tangent neighbours move.
-    for (size_t i = 1; i < d.size(); ++i)
-      for (size_t j = i; j > 0 && curvature_overrides(d[j - 1], d[j], eps, angular_eps); --j)
-        std::swap(d[j - 1], d[j]);
-    for (const Direction& x : d) arr.outgoing[v].push_back(x.half_edge);
-  }
+  for (const Direction& x : dirs) arr.outgoing[x.vertex].push_back(x.half_edge);
 }
 
 // Links each half-edge to the next around its left face: at its target, the half-edge just
