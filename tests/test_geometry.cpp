@@ -238,7 +238,9 @@ TEST(Distance, AgreesWithSamplingOnRandomCurves) {
     EXPECT_GE(exact, sampled - 5e-3) << i;
     // A positive distance means no intersection, and an intersection means distance 0.
     const Intersection x = intersect(a, b, 0.0);
-    if (x.count > 0) EXPECT_NEAR(exact, 0.0, 1e-9) << i;
+    if (x.count > 0) {
+      EXPECT_NEAR(exact, 0.0, 1e-9) << i;
+    }
   }
 }
 
@@ -258,7 +260,9 @@ TEST(Intersection, HitsLieOnBothCurvesForRandomPairs) {
       EXPECT_NEAR(distance(point_at(a, x.hits[h].ta0), x.hits[h].point), 0.0, 1e-8) << i;
       EXPECT_NEAR(distance(point_at(b, x.hits[h].tb0), x.hits[h].point), 0.0, 1e-8) << i;
     }
-    if (x.count == 0) EXPECT_GT(distance_between(a, b), 0.0) << i;
+    if (x.count == 0) {
+      EXPECT_GT(distance_between(a, b), 0.0) << i;
+    }
   }
   EXPECT_GT(hits, 300);
 }
