@@ -202,3 +202,22 @@ TEST(SliceOracle, JaggedStarsWithTinyFacesKeepTheirFreeSpace) {
   std::mt19937 points(8);
   check_against_classify(pair, 0.3, 300, points, "jagged");
 }
+
+TEST(SliceOracle, NearlyTangentArcsCrossingTwiceStayConsistent) {
+  // 10,000 features in all, ~300,000 contact segments: arcs of equal-feature families
+  // meet nearly tangentially and cross again 1e-4 away. The order of curves at each vertex
+  // must follow the intersection step's verdict (tangent or crossing), or a lens between two
+  // such crossings breaks and the unbounded free face leaks into blocked space.
+  std::mt19937 rng(5);
+  const testkit::RandomLoopOptions m{2500, 1.0, 0.0005, 0.5, 0.02, {0, 0}};
+  const testkit::RandomLoopOptions f{2500, 3.0, 0.0005, 0.5, 0.02, {0, 0}};
+  std::string json = R"({"name":"dense","moving":{"loops":[)";
+  json += testkit::random_loop_json(rng, m);
+  json += R"(]},"fixed":{"loops":[)";
+  json += testkit::random_loop_json(rng, f);
+  json += "]}}";
+  const Pair pair = *parse_pair(json, "dense").pair;
+  const Slice s = compute_slice(pair, 0.3);
+  ASSERT_EQ(s.free_components.size(), 1u);
+  EXPECT_FALSE(s.free_components[0].bounded);
+}

@@ -20,7 +20,12 @@ struct SplitPoint {
   int curve;
   double t;
   Vec2 p;
+  int tangent_to = -1;  // the other curve, when the intersection step called this a tangency
 };
+
+// (vertex, curve, curve) with the curves' indices ascending: pairs of curves that the
+// intersection step found tangent (touching without crossing) at that vertex.
+using TangentTouch = std::array<int, 3>;
 
 class UnionFind {
  public:
@@ -66,8 +71,9 @@ std::vector<SplitPoint> split_points(const std::vector<Curve>& curves, double ep
     const Intersection x = intersect(curves[i], curves[j], eps);
     for (int k = 0; k < x.count; ++k) {
       const IntersectionHit& h = x.hits[k];
-      splits.push_back({i, h.ta0, h.point});
-      splits.push_back({j, h.tb0, h.point});
+      const bool tangent = h.is_tangent && !h.is_piece;
+      splits.push_back({i, h.ta0, h.point, tangent ? j : -1});
+      splits.push_back({j, h.tb0, h.point, tangent ? i : -1});
       if (h.is_piece) {
         splits.push_back({i, h.ta1, h.point_end});
         splits.push_back({j, h.tb1, h.point_end});
@@ -166,6 +172,7 @@ void build_edges(Arrangement& arr, const std::vector<Curve>& curves, const std::
       e.u = vertex_of[a];
       e.v = vertex_of[b];
       e.curve = piece_of(curves[c], splits[a].t, splits[b].t, arr.vertices[e.u], arr.vertices[e.v]);
+      e.source = int(c);
       e.tangent_u = tangent_at(curves[c], splits[a].t);
       e.tangent_v = tangent_at(curves[c], splits[b].t);
       e.labels.push_back({ids[c], true});
@@ -178,31 +185,41 @@ void build_edges(Arrangement& arr, const std::vector<Curve>& curves, const std::
 struct Direction {
   int vertex;
   int half_edge;
+  int curve;  // the contact segment the edge comes from
   double angle;
   double curvature;
 };
 
 // Whether b, leaving a vertex just counterclockwise of a (by angle), really lies clockwise
-// of it: b turns right relative to a and their directions differ so little that the two
-// stay within eps of each other until they cross again, a crossing the intersection step
-// merged into this vertex. Beyond eps, curvature decides the order.
-bool curvature_overrides(const Direction& a, const Direction& b, double eps, double angular_eps) {
-  const double gap = b.angle - a.angle, bend = a.curvature - b.curvature;
-  if (bend <= 0.0) return false;
-  return gap <= angular_eps || gap * gap <= 2.0 * eps * bend;
+// of it because b turns right relative to a and the two only touch here. The decision
+// follows the intersection step, so the arrangement stays consistent: curves it called
+// tangent at this vertex are ordered by curvature (their directions may differ by round-off
+// either way), curves it called crossing by direction, except directions equal to within
+// the angular epsilon (tangent by construction, e.g. one curve starting on another).
+bool curvature_overrides(const Direction& a, const Direction& b,
+                         const std::vector<TangentTouch>& tangents, double angular_eps) {
+  if (a.curvature <= b.curvature) return false;
+  const double gap = b.angle - a.angle;
+  if (gap <= angular_eps) return true;
+  // A tangency also joins curves leaving in opposite directions (one continuing the other);
+  // only curves leaving side by side are tied.
+  if (gap >= 0.5 * kPi) return false;
+  const TangentTouch key{a.vertex, std::min(a.curve, b.curve), std::max(a.curve, b.curve)};
+  return std::binary_search(tangents.begin(), tangents.end(), key);
 }
 
 // Orders the half-edges leaving each vertex counterclockwise by tangent, ties (tangent
 // curves) broken by curvature: the one turning left comes later.
-void order_outgoing(Arrangement& arr, double eps, double angular_eps) {
+void order_outgoing(Arrangement& arr, const std::vector<TangentTouch>& tangents,
+                    double angular_eps) {
   std::vector<Direction> dirs;
   dirs.reserve(2 * arr.edges.size());
   for (size_t e = 0; e < arr.edges.size(); ++e) {
     const ArrangementEdge& edge = arr.edges[e];
     const Vec2 t0 = edge.tangent_u, t1 = -edge.tangent_v;
     const double k = signed_curvature(edge.curve);
-    dirs.push_back({edge.u, int(2 * e), std::atan2(t0.y, t0.x), k});
-    dirs.push_back({edge.v, int(2 * e + 1), std::atan2(t1.y, t1.x), -k});
+    dirs.push_back({edge.u, int(2 * e), edge.source, std::atan2(t0.y, t0.x), k});
+    dirs.push_back({edge.v, int(2 * e + 1), edge.source, std::atan2(t1.y, t1.x), -k});
   }
   for (Direction& x : dirs)
     if (x.angle > kPi - angular_eps) x.angle -= kTwoPi;  // one representative for +-pi
@@ -212,7 +229,7 @@ void order_outgoing(Arrangement& arr, double eps, double angular_eps) {
   // Insertion pass: nearly sorted already, only tangent neighbours move.
   for (size_t i = 1; i < dirs.size(); ++i)
     for (size_t j = i; j > 0 && dirs[j - 1].vertex == dirs[j].vertex &&
-                       curvature_overrides(dirs[j - 1], dirs[j], eps, angular_eps);
+                       curvature_overrides(dirs[j - 1], dirs[j], tangents, angular_eps);
          --j)
       std::swap(dirs[j - 1], dirs[j]);
   arr.outgoing.assign(arr.vertices.size(), {});
@@ -364,7 +381,14 @@ Arrangement build_arrangement(const std::vector<Curve>& curves, const std::vecto
   const std::vector<SplitPoint> splits = split_points(curves, tol.geometric);
   const std::vector<int> vertex_of = merge_points(splits, tol.geometric, arr.vertices);
   build_edges(arr, curves, segment_ids, splits, vertex_of, tol.geometric);
-  order_outgoing(arr, tol.geometric, tol.angular);
+  std::vector<TangentTouch> tangents;
+  for (size_t i = 0; i < splits.size(); ++i) {
+    if (splits[i].tangent_to < 0) continue;
+    const int a = splits[i].curve, b = splits[i].tangent_to;
+    tangents.push_back({vertex_of[i], std::min(a, b), std::max(a, b)});
+  }
+  std::sort(tangents.begin(), tangents.end());
+  order_outgoing(arr, tangents, tol.angular);
   link_half_edges(arr);
   trace_cycles(arr);
   assign_faces(arr);

@@ -21,6 +21,7 @@ struct ArrangementEdge {
   int u = 0, v = 0;  // vertex ids; the curve runs from u to v
   Curve curve;
   std::vector<EdgeLabel> labels;
+  int source = -1;  // index of the curve this piece was cut from (the first, when merged)
   // Unit tangents of the unsnapped contact segment at u and at v (both along the curve):
   // snapping ends to merged vertices would tilt a short piece by up to eps / length.
   Vec2 tangent_u, tangent_v;
