@@ -1,18 +1,16 @@
 // `cslice classify` run as a program: answers on standard output, one per query, and on a bad
 // query exit status 2 with nothing on standard output.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
+
+#include "support/cli_run.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
+using namespace cslice::testkit;
 
 // A unit square moving around a 2 x 2 block with a tolerance of 0.01.
 constexpr const char* kPairJson = R"({
@@ -21,59 +19,21 @@ constexpr const char* kPairJson = R"({
   "fixed": { "loops": [[[0, 0], [2, 0], [2, 2], [0, 2]]], "enclosure": false }
 })";
 
-struct RunResult {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// Single-quoted for the shell (the paths here contain no quotes). Built with += because
-// GCC 12 at -O3 warns falsely (-Wrestrict) on the equivalent chain of operator+.
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  q += s;
-  q += "'";
-  return q;
-}
-
-void write_file(const fs::path& p, const std::string& text) {
-  std::ofstream(p) << text;
-}
-
-class CliClassify : public ::testing::Test {
+class CliClassify : public ScratchDirTest {
  protected:
+  CliClassify() : ScratchDirTest("cslice_cli_classify") {}
   void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("cslice_cli_classify_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::create_directories(dir_);
     pair_ = dir_ / "pair.json";
     write_file(pair_, kPairJson);
   }
-  void TearDown() override { fs::remove_all(dir_); }
 
   // Runs `cslice classify <args>` with `input` on standard input.
   RunResult run(const std::string& args, const std::string& input = "") {
-    write_file(dir_ / "in.txt", input);
-    const std::string command = std::string("'") + CSLICE_CLI_PATH + "' classify " + args + " < '" +
-                                (dir_ / "in.txt").string() + "' > '" + (dir_ / "out.txt").string() +
-                                "' 2> '" + (dir_ / "err.txt").string() + "'";
-    const int raw = std::system(command.c_str());
-    RunResult r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = read_file(dir_ / "out.txt");
-    r.err = read_file(dir_ / "err.txt");
-    return r;
+    return run_cli("classify " + args, dir_, input);
   }
   std::string pair() const { return quoted(pair_); }
 
-  fs::path dir_, pair_;
+  fs::path pair_;
 };
 
 TEST_F(CliClassify, ReadsPosesFromStandardInput) {

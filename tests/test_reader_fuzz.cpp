@@ -2,21 +2,17 @@
 // come back as a pair or as an error with a message, quickly, never as a crash or a hang.
 // Also the `cslice info` exit statuses on a bad and a good file.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cctype>
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "cslice/pair.hpp"
+#include "support/cli_run.hpp"
 
 namespace cslice {
 namespace {
@@ -227,44 +223,18 @@ TEST(ReaderFuzz, MutationsNeverCrashOrHang) {
 
 // ---- The CLI ------------------------------------------------------------------------------
 
-struct RunResult {
-  int status = -1;
-  std::string out, err;
-};
+using testkit::run_cli;
+using testkit::RunResult;
+using testkit::write_file;
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-RunResult run_cli(const std::string& args, const std::filesystem::path& dir) {
-  const auto out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string cmd = std::string("'") + CSLICE_CLI_PATH + "' " + args + " >'" + out.string() +
-                          "' 2>'" + err.string() + "'";
-  const int raw = std::system(cmd.c_str());
-  RunResult r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
-
-class InfoCli : public ::testing::Test {
+class InfoCli : public testkit::ScratchDirTest {
  protected:
-  void SetUp() override {
-    dir_ =
-        std::filesystem::temp_directory_path() / ("cslice_info_cli_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
+  InfoCli() : ScratchDirTest("cslice_info_cli") {}
   std::filesystem::path write(const std::string& name, const std::string& text) {
     const auto p = dir_ / name;
-    std::ofstream(p) << text;
+    write_file(p, text);
     return p;
   }
-  std::filesystem::path dir_;
 };
 
 TEST_F(InfoCli, BadFileExitsTwoWithMessageOnStderr) {

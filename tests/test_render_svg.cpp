@@ -2,14 +2,9 @@
 // arcs as true arcs, carries a scale bar, and frames both parts; `cslice render` refuses a
 // bad pose without leaving a file behind.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <regex>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -17,11 +12,13 @@
 #include "cslice/pair.hpp"
 #include "cslice/part.hpp"
 #include "cslice/render_svg.hpp"
+#include "support/cli_run.hpp"
 
 namespace cslice {
 namespace {
 
 namespace fs = std::filesystem;
+using namespace testkit;
 
 // A unit disc beside a 2 x 2 block: one arc edge, four segments.
 constexpr const char* kDiscPair = R"({
@@ -162,42 +159,28 @@ TEST(RenderSvg, WidthSetsThePictureSize) {
 
 // ---- The command-line program ------------------------------------------------------------
 
-class CliRender : public ::testing::Test {
+class CliRender : public ScratchDirTest {
  protected:
+  CliRender() : ScratchDirTest("cslice_cli_render") {}
   void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("cslice_cli_render_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::create_directories(dir_);
     pair_ = dir_ / "pair.json";
-    std::ofstream(pair_) << kDiscPair;
+    write_file(pair_, kDiscPair);
   }
-  void TearDown() override { fs::remove_all(dir_); }
 
   // Runs `cslice render` with extra arguments; returns the exit status.
   int render(const std::string& args) {
-    std::string cmd = "'";
-    cmd += CSLICE_CLI_PATH;
-    cmd += "' render '";
-    cmd += pair_.string();
-    cmd += "' ";
-    cmd += args;
-    cmd += " 2>/dev/null >/dev/null";
-    const int raw = std::system(cmd.c_str());
-    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    return run_cli("render " + quoted(pair_.string()) + " " + args, dir_).status;
   }
 
-  fs::path dir_, pair_;
+  fs::path pair_;
 };
 
 TEST_F(CliRender, WritesAPicture) {
   const fs::path out = dir_ / "out.svg";
   ASSERT_EQ(render("--at 0.5,0,0.3 --width 400 --title T -o '" + out.string() + "'"), 0);
-  std::ifstream in(out);
-  std::stringstream s;
-  s << in.rdbuf();
-  EXPECT_EQ(s.str().rfind("<svg", 0), 0u);
-  EXPECT_NE(s.str().find("width=\"400\""), std::string::npos);
+  const std::string svg = read_file(out);
+  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+  EXPECT_NE(svg.find("width=\"400\""), std::string::npos);
 }
 
 TEST_F(CliRender, BadPoseExitsTwoWithoutFile) {

@@ -2,17 +2,12 @@
 // slices, render_slice_svg's regions, arcs (with the sweep flag right under the y flip) and
 // legend, and `cslice slice` as a program: outputs on success, no file on bad input.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <regex>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -20,12 +15,17 @@
 #include "cslice/render_svg.hpp"
 #include "cslice/slice.hpp"
 #include "cslice/slice_io.hpp"
+#include "support/cli_run.hpp"
 
 namespace cslice {
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using testkit::quoted;
+using testkit::read_file;
+using testkit::run_cli;
+using testkit::RunResult;
 
 // Moving: a unit square (features: vertex 0, segment 0, vertex 1, ...). Fixed: loop 0 a big
 // square listed clockwise (so the reader reverses it), loop 1 a circle hole.
@@ -469,55 +469,16 @@ TEST(SliceSvg, EmptySliceStillDraws) {
 
 // ---- The command ---------------------------------------------------------------------
 
-struct RunResult {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  q += s;
-  q += "'";
-  return q;
-}
-
-class CliSlice : public ::testing::Test {
+class CliSlice : public testkit::ScratchDirTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("cslice_cli_slice_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  CliSlice() : ScratchDirTest("cslice_cli_slice") {}
 
-  RunResult run(const std::string& args) {
-    std::string command = quoted(CSLICE_CLI_PATH);
-    command += " slice ";
-    command += args;
-    command += " > " + quoted((dir_ / "out.txt").string());
-    command += " 2> " + quoted((dir_ / "err.txt").string());
-    const int raw = std::system(command.c_str());
-    RunResult r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = read_text(dir_ / "out.txt");
-    r.err = read_text(dir_ / "err.txt");
-    return r;
-  }
+  RunResult run(const std::string& args) { return run_cli("slice " + args, dir_); }
   static std::string example(const std::string& name) {
     return quoted(std::string(CSLICE_SOURCE_DIR) + "/examples/" + name + ".json");
   }
   std::string path(const std::string& name) const { return quoted((dir_ / name).string()); }
   bool exists(const std::string& name) const { return fs::exists(dir_ / name); }
-
-  fs::path dir_;
 };
 
 TEST_F(CliSlice, WritesJsonAndSvg) {
@@ -525,7 +486,7 @@ TEST_F(CliSlice, WritesJsonAndSvg) {
                           path("s.svg") + " --mark 0,-3");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out, "");
-  const json j = json::parse(read_text(dir_ / "s.json"));
+  const json j = json::parse(read_file(dir_ / "s.json"));
   EXPECT_EQ(j["format"], "cslice-slice");
   EXPECT_EQ(j["pair"], "fastener");
   const json& n = j["counts"];
@@ -539,7 +500,7 @@ TEST_F(CliSlice, WritesJsonAndSvg) {
   // Paper section 2.4: the horizontal pin has two free components, inside and outside.
   EXPECT_EQ(n["free_components"], 2);
   EXPECT_EQ(n["bounded_free_components"], 1);
-  const std::string svg = read_text(dir_ / "s.svg");
+  const std::string svg = read_file(dir_ / "s.svg");
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);
   EXPECT_NE(svg.find("(0, -3)"), std::string::npos);
   for (const auto& e : fs::directory_iterator(dir_))  // no temporaries left behind

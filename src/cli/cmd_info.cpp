@@ -1,7 +1,6 @@
 // `cslice info PAIR.json [--json]`: what the reader made of a pair file. Counts follow the
 // paper (features = segments + arcs + vertices); the JSON fields are documented in
 // docs/pair-format.md.
-#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -69,16 +68,6 @@ std::string info_json(const Pair& pair) {
   return out.dump(2) + "\n";
 }
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
-std::string point(Vec2 p) {
-  return "(" + num(p.x) + ", " + num(p.y) + ")";
-}
-
 std::string count_of(int n, const char* word) {
   return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
 }
@@ -97,33 +86,29 @@ void write_part(std::ostream& out, const Pair& pair, const Part& part) {
   out << part.name << " part"
       << (part.enclosure ? " (enclosure: the material is outside its loops)" : "") << "\n";
   const auto row = [&](const char* label, const std::string& value) {
-    char buf[24];
-    std::snprintf(buf, sizeof buf, "  %-11s", label);
-    out << buf << value << "\n";
+    out << "  " << summary_row(label, 11, value);
   };
   row("loops", loops_line(part));
   row("segments", std::to_string(part.segment_count()));
   row("arcs", std::to_string(part.arc_count()));
   row("vertices", std::to_string(part.vertex_count()));
   row("features", std::to_string(part.feature_count()));
-  row("box", point(part.box.lo) + " to " + point(part.box.hi));
-  row("area",
-      num(part.area) + " " + pair.units + "^2" + (part.enclosure ? " (area of the openings)" : ""));
+  row("box", format_point(part.box.lo) + " to " + format_point(part.box.hi));
+  row("area", format_number(part.area) + " " + pair.units + "^2" +
+                  (part.enclosure ? " (area of the openings)" : ""));
 }
 
 std::string info_text(const Pair& pair) {
   std::ostringstream out;
   const auto row = [&](const char* label, const std::string& value) {
-    char buf[24];
-    std::snprintf(buf, sizeof buf, "%-11s", label);
-    out << buf << value << "\n";
+    out << summary_row(label, 11, value);
   };
   row("pair", pair.name);
   row("units", pair.units);
-  row("size", num(pair.tol.size) + " " + pair.units);
-  row("tolerance", num(pair.tol.contact) + " " + pair.units +
+  row("size", format_number(pair.tol.size) + " " + pair.units);
+  row("tolerance", format_number(pair.tol.contact) + " " + pair.units +
                        (pair.requested_tolerance ? "" : " (default: 0.1% of the size)"));
-  row("geometric", num(pair.tol.geometric) + " " + pair.units);
+  row("geometric", format_number(pair.tol.geometric) + " " + pair.units);
   row("features", std::to_string(pair.moving.feature_count() + pair.fixed.feature_count()) +
                       " (moving " + std::to_string(pair.moving.feature_count()) + ", fixed " +
                       std::to_string(pair.fixed.feature_count()) + ")");

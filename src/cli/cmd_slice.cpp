@@ -3,13 +3,11 @@
 // or as a short summary on standard output. Every output is built in memory first and the
 // files are only written once everything has succeeded, so a failure leaves none behind.
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,41 +35,16 @@ struct SliceOptions {
   bool all_segments = false;
 };
 
-// "x,y" (or "x y"): two finite numbers.
-Vec2 parse_mark_or_exit(const std::string& text) {
-  std::string normalized = text;
-  for (char& ch : normalized)
-    if (ch == ',') ch = ' ';
-  std::istringstream in(normalized);
-  Vec2 p;
-  std::string extra;
-  if (!(in >> p.x >> p.y) || (in >> extra) || !is_finite(p)) {
-    throw ExitError(kExitBadInput, "--mark: expected two finite numbers x,y, got '" + text + "'");
-  }
-  return p;
-}
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
-std::string point(Vec2 p) {
-  return "(" + num(p.x) + ", " + num(p.y) + ")";
-}
-
+// Summary lines: the label column is 21 wide.
 std::string row(const char* label, const std::string& value) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%-21s", label);
-  return buf + value + "\n";
+  return summary_row(label, 21, value);
 }
 
 std::string summary_text(const Pair& pair, const Slice& slice, const std::optional<Vec2>& mark) {
   const std::size_t realizable = realizable_segment_ids(slice).size();
   int bounded = 0;
   for (const FreeComponent& c : slice.free_components) bounded += c.bounded ? 1 : 0;
-  std::string out = row("pair", pair.name) + row("theta", num(slice.theta) + " rad");
+  std::string out = row("pair", pair.name) + row("theta", format_number(slice.theta) + " rad");
   out += row("contact segments", std::to_string(slice.contact_segments.size()) + " (" +
                                      std::to_string(realizable) + " realizable)");
   out += row("free components", std::to_string(slice.free_components.size()) + " (" +
@@ -80,12 +53,14 @@ std::string summary_text(const Pair& pair, const Slice& slice, const std::option
   out += row("contact graph edges", std::to_string(slice.contact_graph.edges.size()));
   for (const FreeComponent& c : slice.free_components) {
     const std::string area =
-        c.bounded ? "bounded, area " + num(c.area) + " " + pair.units + "^2" : "unbounded";
-    out += "component " + std::to_string(c.id) + ": " + area + ", sample " + point(c.sample) + "\n";
+        c.bounded ? "bounded, area " + format_number(c.area) + " " + pair.units + "^2"
+                  : "unbounded";
+    out += "component " + std::to_string(c.id) + ": " + area + ", sample " +
+           format_point(c.sample) + "\n";
   }
   if (mark) {
     const int where = slice.locate(*mark);
-    out += "mark " + point(*mark) + ": " +
+    out += "mark " + format_point(*mark) + ": " +
            (where < 0 ? std::string("blocked or in contact")
                       : "free component " + std::to_string(where)) +
            "\n";
@@ -133,7 +108,7 @@ void run_slice(const SliceOptions& options) {
     throw ExitError(kExitBadInput, "--json and --svg cannot both go to standard output");
   SlicePictureOptions picture;
   picture.show_all_segments = options.all_segments;
-  if (!options.mark.empty()) picture.mark = parse_mark_or_exit(options.mark);
+  if (!options.mark.empty()) picture.mark = parse_point_or_exit(options.mark, "--mark");
   const Slice slice = compute_slice(pair, options.theta);
 
   std::vector<std::pair<std::string, std::string>> outputs;

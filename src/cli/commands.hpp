@@ -25,6 +25,15 @@ struct ExitError : std::runtime_error {
 Pair load_pair_or_exit(const std::string& path);
 // Parses "x,y,theta" (theta in radians) or throws ExitError(2) naming `what`.
 Pose parse_pose_or_exit(const std::string& text, const std::string& what);
+// Parses "x,y" or throws ExitError(2) naming `what`. Like a pose, commas or spaces separate.
+Vec2 parse_point_or_exit(const std::string& text, const std::string& what);
+
+// Numbers as the commands print them: six significant digits (printf's %g).
+std::string format_number(double v);
+// "(x, y)".
+std::string format_point(Vec2 p);
+// One line of a text summary: `label` padded to `width` columns, then `value`.
+std::string summary_row(const std::string& label, int width, const std::string& value);
 
 void register_info(CLI::App& app);
 void register_classify(CLI::App& app);

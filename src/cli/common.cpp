@@ -1,9 +1,28 @@
 #include <cmath>
+#include <cstdio>
+#include <initializer_list>
 #include <sstream>
 
 #include "cli/commands.hpp"
 
 namespace cslice::cli {
+
+namespace {
+
+// Reads one finite number into each of `values` from `text`, where commas count as spaces;
+// false if any is missing or not finite, or anything follows them.
+bool read_finite_numbers(const std::string& text, std::initializer_list<double*> values) {
+  std::string normalized = text;
+  for (char& ch : normalized)
+    if (ch == ',') ch = ' ';
+  std::istringstream in(normalized);
+  for (double* v : values)
+    if (!(in >> *v) || !std::isfinite(*v)) return false;
+  std::string extra;
+  return !(in >> extra);
+}
+
+}  // namespace
 
 Pair load_pair_or_exit(const std::string& path) {
   LoadResult result = load_pair(path);
@@ -12,18 +31,35 @@ Pair load_pair_or_exit(const std::string& path) {
 }
 
 Pose parse_pose_or_exit(const std::string& text, const std::string& what) {
-  std::string normalized = text;
-  for (char& ch : normalized)
-    if (ch == ',') ch = ' ';
-  std::istringstream in(normalized);
   Pose p;
-  std::string extra;
-  if (!(in >> p.x >> p.y >> p.theta) || (in >> extra) || !std::isfinite(p.x) ||
-      !std::isfinite(p.y) || !std::isfinite(p.theta)) {
+  if (!read_finite_numbers(text, {&p.x, &p.y, &p.theta})) {
     throw ExitError(kExitBadInput,
                     what + ": expected three finite numbers x,y,theta, got '" + text + "'");
   }
   return p;
+}
+
+Vec2 parse_point_or_exit(const std::string& text, const std::string& what) {
+  Vec2 p;
+  if (!read_finite_numbers(text, {&p.x, &p.y}))
+    throw ExitError(kExitBadInput, what + ": expected two finite numbers x,y, got '" + text + "'");
+  return p;
+}
+
+std::string format_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+std::string format_point(Vec2 p) {
+  return "(" + format_number(p.x) + ", " + format_number(p.y) + ")";
+}
+
+std::string summary_row(const std::string& label, int width, const std::string& value) {
+  std::string row = label;
+  if (row.size() < static_cast<std::size_t>(width)) row.resize(width, ' ');
+  return row + value + "\n";
 }
 
 }  // namespace cslice::cli

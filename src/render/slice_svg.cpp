@@ -4,7 +4,6 @@
 // and stroke widths are in pixels whatever the pair's size.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <set>
 #include <sstream>
@@ -12,6 +11,7 @@
 #include "cslice/render_svg.hpp"
 #include "cslice/slice.hpp"
 #include "cslice/slice_io.hpp"
+#include "render/svg_writer.hpp"
 
 namespace cslice {
 
@@ -34,51 +34,20 @@ constexpr const char* kMarkStyle = "fill=\"#e4002b\" stroke=\"#ffffff\" stroke-w
 constexpr const char* kEvenOdd = " fill-rule=\"evenodd\"";
 constexpr const char* kDashed = " stroke-dasharray=\"4 3\"";
 
-// Concatenation by appending: GCC 12 warns falsely (-Wrestrict) on long operator+ chains.
-template <typename... Parts>
-std::string cat(const Parts&... parts) {
-  std::string s;
-  (s += ... += parts);
-  return s;
+using svg::cat;
+
+// Pixel coordinates and sizes.
+std::string num(double v) {
+  return svg::fixed(v, 2);
 }
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  return buf;
+// World values (tick labels, lengths, the theta of the title).
+std::string label(double v) {
+  return svg::number(v, 6);
 }
 
 std::string fill(const char* colour) {
   return cat("fill=\"", colour, "\"");
-}
-
-std::string label(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v == 0.0 ? 0.0 : v);  // no "-0"
-  return buf;
-}
-
-std::string escaped(const std::string& s) {
-  std::string out;
-  for (char ch : s) {
-    switch (ch) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += ch;
-    }
-  }
-  return out;
 }
 
 // One colour per contact kind, in enum order (distinct on white and on grey).
@@ -146,7 +115,7 @@ Box world_box(const Pair& pair, const Slice& slice, const SlicePictureOptions& o
   if (options.mark) b.add(*options.mark);
   if (b.empty()) b = pair.fixed.box;
   if (b.empty()) b.add(Vec2{0.0, 0.0});
-  double side = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
+  double side = svg::larger_side(b);
   // A lone point has no extent; show a patch the size of the pair around it.
   if (!(side > 0.0)) side = pair.tol.size > 0.0 ? pair.tol.size : 1.0;
   return b.inflated(kMarginFraction * side);
@@ -164,24 +133,23 @@ View make_view(const Box& world, double width_px) {
 
 // ---- Paths ---------------------------------------------------------------------------
 
-// SVG measures angles with +y down, so the flip makes a counterclockwise world arc turn the
-// negative way: sweep-flag 0.
-std::string arc_to(double r_px, bool large, bool counterclockwise, Vec2 to_px) {
-  return cat("A", num(r_px), " ", num(r_px), " 0 ", large ? "1" : "0", " ",
-             counterclockwise ? "0" : "1", " ", xy(to_px));
+// One SVG arc command to `to_px`, with the flags of svg::arc_flags.
+std::string arc_to(double r_px, svg::ArcFlags flags, Vec2 to_px) {
+  return cat("A", num(r_px), " ", num(r_px), " 0 ", flags.large ? "1" : "0", " ",
+             flags.sweep ? "1" : "0", " ", xy(to_px));
 }
 
-// Commands tracing `c` from its start, where the pen already is. A full circle has equal
-// endpoints, which a single SVG arc cannot join, so it goes as two halves.
+// Commands tracing `c` from its start, where the pen already is. A full circle goes as two
+// halves (svg::split_full_circle), the second ending exactly where the pen started.
 std::string curve_commands(const View& v, const Curve& c) {
   if (c.is_segment()) return cat("L", xy(v.px(c.to)));
   const double r = c.radius * v.scale;
-  const bool ccw = c.sweep > 0.0;
   if (c.is_full_circle()) {
-    const Vec2 half = c.center + c.radius * unit_vector(c.start_angle + 0.5 * c.sweep);
-    return cat(arc_to(r, false, ccw, v.px(half)), arc_to(r, false, ccw, v.px(c.from)));
+    const auto [first, second] = svg::split_full_circle(c);
+    return cat(arc_to(r, svg::arc_flags(first), v.px(first.to)),
+               arc_to(r, svg::arc_flags(second), v.px(c.from)));
   }
-  return arc_to(r, std::fabs(c.sweep) > kPi, ccw, v.px(c.to));
+  return arc_to(r, svg::arc_flags(c), v.px(c.to));
 }
 
 std::string curve_path(const View& v, const Curve& c) {
@@ -300,16 +268,8 @@ std::string pieces_layer(const View& v, const Slice& slice,
 
 // ---- Frame, ticks, scale bar, legend -------------------------------------------------
 
-// The largest of 1, 2, 5 times a power of ten that is at most `target`.
-double nice_step(double target) {
-  const double p = std::pow(10.0, std::floor(std::log10(target)));
-  for (double m : {5.0, 2.0, 1.0})
-    if (m * p <= target) return m * p;
-  return p;
-}
-
 std::string text(Vec2 at, const std::string& s, const std::string& attrs) {
-  return cat("<text x=\"", num(at.x), "\" y=\"", num(at.y), "\" ", attrs, ">", escaped(s),
+  return cat("<text x=\"", num(at.x), "\" y=\"", num(at.y), "\" ", attrs, ">", svg::xml_escape(s),
              "</text>\n");
 }
 
@@ -321,7 +281,7 @@ std::string line(Vec2 a, Vec2 b, const std::string& attrs) {
 // Ticks at round coordinates on the bottom and left edges, so positions can be read off.
 std::string ticks_layer(const View& v) {
   const Box& w = v.world;
-  const double step = nice_step(std::max(w.hi.x - w.lo.x, w.hi.y - w.lo.y) / 6.0);
+  const double step = svg::nice_step(svg::larger_side(w) / 6.0);
   const std::string tick = "stroke=\"#000000\" stroke-width=\"1\"";
   const std::string font = "font-family=\"sans-serif\" font-size=\"11\"";
   std::string out;
@@ -341,7 +301,7 @@ std::string ticks_layer(const View& v) {
 }
 
 std::string scale_bar(const View& v, const std::string& units) {
-  const double len = nice_step((v.world.hi.x - v.world.lo.x) / 4.0);
+  const double len = svg::nice_step((v.world.hi.x - v.world.lo.x) / 4.0);
   const double y = v.top + v.height() + 44.0;
   const double x0 = v.left, x1 = v.left + len * v.scale;
   const std::string s = "stroke=\"#000000\" stroke-width=\"2\"";

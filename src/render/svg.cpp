@@ -3,10 +3,10 @@
 // points down and the pictures must read like the paper's figures, with y up.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "cslice/render_svg.hpp"
+#include "render/svg_writer.hpp"
 
 namespace cslice {
 namespace {
@@ -32,11 +32,9 @@ constexpr double kStrokePx = 1.3;
 constexpr double kFontPx = 14.0;
 constexpr double kTitleFontPx = 17.0;
 
+// No "-0" or "1e-17" noise from round-off.
 std::string num(double v) {
-  if (std::fabs(v) < 1e-12) v = 0.0;  // no "-0" or "1e-17" noise from round-off
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.7g", v);
-  return buf;
+  return svg::number(std::fabs(v) < 1e-12 ? 0.0 : v, 7);
 }
 
 // World point to SVG user space.
@@ -44,49 +42,19 @@ std::string pt(Vec2 p) {
   return num(p.x) + " " + num(-p.y);
 }
 
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  for (char ch : s) {
-    switch (ch) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        out += ch;
-    }
-  }
-  return out;
-}
-
-// One SVG arc command. Negating y mirrors the picture, which turns counterclockwise arcs
-// clockwise on screen: SVG's sweep flag 1 means increasing screen angle, i.e. a clockwise
-// arc in the world. |sweep| must be below 2pi (full circles are split by the caller).
+// One SVG arc command (flags: svg::arc_flags). |sweep| must be below 2pi (full circles are
+// split by the caller).
 std::string arc_command(const Curve& c) {
-  const bool large = std::fabs(c.sweep) > kPi;
-  const bool sweep_flag = c.sweep < 0.0;
-  return "A " + num(c.radius) + " " + num(c.radius) + " 0 " + (large ? "1 " : "0 ") +
-         (sweep_flag ? "1 " : "0 ") + pt(c.to) + " ";
+  const svg::ArcFlags flags = svg::arc_flags(c);
+  return "A " + num(c.radius) + " " + num(c.radius) + " 0 " + (flags.large ? "1 " : "0 ") +
+         (flags.sweep ? "1 " : "0 ") + pt(c.to) + " ";
 }
 
 void append_edge(std::string& d, const Curve& c) {
   if (c.is_segment()) {
     d += "L " + pt(c.to) + " ";
   } else if (c.is_full_circle()) {
-    // An SVG arc whose ends coincide draws nothing: use two half circles.
-    Curve first = make_arc(c.center, c.radius, c.start_angle, c.sweep / 2);
-    Curve second = make_arc(c.center, c.radius, c.start_angle + c.sweep / 2, c.sweep / 2);
+    const auto [first, second] = svg::split_full_circle(c);
     d += arc_command(first) + arc_command(second);
   } else {
     d += arc_command(c);
@@ -116,23 +84,11 @@ Box curves_box(const Part& part) {
   return b;
 }
 
-double larger_side(const Box& b) {
-  return std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
-}
-
 // The region drawn as material: the loops' box, or for an enclosure a frame around it.
 Box material_box(const Part& part) {
   Box b = curves_box(part);
-  if (part.enclosure) b = b.inflated(kEnclosureFrame * larger_side(b));
+  if (part.enclosure) b = b.inflated(kEnclosureFrame * svg::larger_side(b));
   return b;
-}
-
-// The largest 1, 2 or 5 times a power of ten not above `limit`.
-double round_length(double limit) {
-  const double decade = std::pow(10.0, std::floor(std::log10(limit)));
-  for (double step : {5.0, 2.0, 1.0})
-    if (step * decade <= limit) return step * decade;
-  return decade;
 }
 
 // Where things go: the world box drawn, and the scale from world units to pixels.
@@ -146,7 +102,7 @@ struct Layout {
 Layout make_layout(const Box& content, const SvgOptions& options) {
   Layout l;
   l.content = content;
-  double side = larger_side(content);
+  double side = svg::larger_side(content);
   if (!(side > 0.0)) side = 1.0;  // a degenerate drawing still gets a visible frame
   const double margin = kMargin * side;
   l.view = content.inflated(margin);
@@ -211,13 +167,13 @@ std::string reference_marker(const Pose& pose, const Layout& l) {
 
 std::string text(Vec2 at, double font_units, const std::string& anchor, const std::string& s) {
   return "<text x=\"" + num(at.x) + "\" y=\"" + num(-at.y) + "\" font-family=\"sans-serif\" " +
-         "font-size=\"" + num(font_units) + "\" text-anchor=\"" + anchor + "\">" + xml_escape(s) +
-         "</text>\n";
+         "font-size=\"" + num(font_units) + "\" text-anchor=\"" + anchor + "\">" +
+         svg::xml_escape(s) + "</text>\n";
 }
 
 std::string scale_bar(const Layout& l, const std::string& units) {
-  const double side = larger_side(l.content);
-  const double length = round_length(0.25 * (l.content.hi.x - l.content.lo.x));
+  const double side = svg::larger_side(l.content);
+  const double length = svg::nice_step(0.25 * (l.content.hi.x - l.content.lo.x));
   const Vec2 a{l.content.lo.x, l.content.lo.y - 0.5 * kScaleBand * side};
   const Vec2 b = a + Vec2{length, 0};
   const Vec2 tick{0, l.unit(4.0)};
@@ -246,15 +202,15 @@ std::string render_pair_svg(const Pair& pair, const Pose& pose, const SvgOptions
   content.add(Vec2{pose.x, pose.y});
   const Layout l = make_layout(content, options);
 
-  std::string svg = header(l, options);
-  svg += "<title>" + xml_escape(pair.name.empty() ? "cslice pair" : pair.name) + "</title>\n";
-  svg += background(l);
-  svg += fixed_part(pair.fixed, l);
-  svg += moving_part(moving, l);
-  if (options.show_reference_point) svg += reference_marker(pose, l);
-  if (options.show_scale_bar) svg += scale_bar(l, pair.units);
-  if (!options.title.empty()) svg += title(l, options.title);
-  return svg + "</svg>\n";
+  std::string out = header(l, options);
+  out += "<title>" + svg::xml_escape(pair.name.empty() ? "cslice pair" : pair.name) + "</title>\n";
+  out += background(l);
+  out += fixed_part(pair.fixed, l);
+  out += moving_part(moving, l);
+  if (options.show_reference_point) out += reference_marker(pose, l);
+  if (options.show_scale_bar) out += scale_bar(l, pair.units);
+  if (!options.title.empty()) out += title(l, options.title);
+  return out + "</svg>\n";
 }
 
 }  // namespace cslice
