@@ -162,14 +162,73 @@ class ContactBuilder {
   std::vector<ContactSegment> out_;
 };
 
+// Fixed features bucketed by the directions of their outward normals, so that each moving
+// feature meets only the fixed ones whose normals can oppose its own: the pairs that can
+// touch at all. Buckets split the circle evenly; an interval goes into every bucket it
+// overlaps (widened by the angular epsilon, as the interval tests are inclusive).
+class NormalIndex {
+ public:
+  NormalIndex(const std::vector<ContactFeature>& fixed, double angular_eps)
+      : buckets_(std::clamp<size_t>(2 * fixed.size(), 64, 65536)), eps_(angular_eps) {
+    width_ = kTwoPi / double(buckets_.size());
+    for (size_t i = 0; i < fixed.size(); ++i)
+      if (fixed[i].can_touch)
+        for_each_bucket(fixed[i].normals, [&](size_t b) { buckets_[b].push_back(int(i)); });
+    seen_.assign(fixed.size(), -1);
+  }
+
+  // Calls visit(i) once for every fixed feature i whose bucket range meets the interval.
+  template <class Visit>
+  void for_each_candidate(const AngleInterval& normals, int query, Visit visit) {
+    for_each_bucket(normals, [&](size_t b) {
+      for (int i : buckets_[b]) {
+        if (seen_[i] == query) continue;
+        seen_[i] = query;
+        visit(i);
+      }
+    });
+  }
+
+ private:
+  template <class Fn>
+  void for_each_bucket(const AngleInterval& a, Fn fn) const {
+    const size_t n = buckets_.size();
+    if (a.span + 2.0 * eps_ >= kTwoPi) {
+      for (size_t b = 0; b < n; ++b) fn(b);
+      return;
+    }
+    double lo = std::fmod(a.lo - eps_, kTwoPi);
+    if (lo < 0.0) lo += kTwoPi;
+    const size_t first = std::min(n - 1, size_t(lo / width_));
+    const size_t count = std::min(n, size_t((lo + a.span + 2.0 * eps_) / width_) - first + 1);
+    for (size_t k = 0; k < count; ++k) fn((first + k) % n);
+  }
+
+  std::vector<std::vector<int>> buckets_;
+  std::vector<int> seen_;
+  double width_ = 1.0;
+  double eps_;
+};
+
 }  // namespace
 
 std::vector<ContactSegment> contact_segments(const Pair& pair, double theta) {
   const std::vector<ContactFeature> moving = contact_features(pair.moving);
   const std::vector<ContactFeature> fixed = contact_features(pair.fixed);
   ContactBuilder builder(pair, theta);
-  for (const ContactFeature& m : moving)
-    for (const ContactFeature& f : fixed) builder.add_pair(m, f);
+  NormalIndex index(fixed, pair.tol.angular);
+  // Candidates arrive in bucket order; sorting each moving feature's list keeps the output
+  // (segment ids) in the fixed order of the features, whatever the bucketing.
+  std::vector<int> candidates;
+  for (size_t k = 0; k < moving.size(); ++k) {
+    const ContactFeature& m = moving[k];
+    if (!m.can_touch) continue;
+    candidates.clear();
+    const AngleInterval opposed{m.normals.lo + theta + kPi, m.normals.span};
+    index.for_each_candidate(opposed, int(k), [&](int i) { candidates.push_back(i); });
+    std::sort(candidates.begin(), candidates.end());
+    for (int i : candidates) builder.add_pair(m, fixed[i]);
+  }
   return builder.take();
 }
 
