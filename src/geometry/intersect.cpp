@@ -56,20 +56,24 @@ void finish_kind(Intersection& r) {
     r.kind = r.count == 1 ? IntersectionKind::one : IntersectionKind::two;
 }
 
+// Whether p is within eps of the curve's carrier (its line or circle): a cheap necessary
+// condition for being within eps of the curve itself.
+bool near_carrier(const Curve& c, Vec2 p, double eps) {
+  if (c.is_arc()) return std::fabs(distance(p, c.center) - c.radius) <= eps;
+  const Vec2 d = c.to - c.from;
+  return std::fabs(cross(d, p - c.from)) <= eps * length(d);
+}
+
 // Adds endpoint touches that the closed-form solution may have lost to round-off.
 void add_endpoint_touches(Intersection& r, const Curve& a, const Curve& b, double eps) {
-  const Box box_a = bounding_box(a).inflated(eps), box_b = bounding_box(b).inflated(eps);
-  auto in = [](const Box& box, Vec2 p) {
-    return p.x >= box.lo.x && p.x <= box.hi.x && p.y >= box.lo.y && p.y <= box.hi.y;
-  };
   for (double ta : {0.0, 1.0}) {
     const Vec2 p = point_at(a, ta);
-    if (in(box_b, p) && distance_to_curve(b, p) <= eps)
+    if (near_carrier(b, p, eps) && distance_to_curve(b, p) <= eps)
       add_hit(r, point_hit(p, ta, closest_parameter(b, p), false), eps);
   }
   for (double tb : {0.0, 1.0}) {
     const Vec2 p = point_at(b, tb);
-    if (in(box_a, p) && distance_to_curve(a, p) <= eps)
+    if (near_carrier(a, p, eps) && distance_to_curve(a, p) <= eps)
       add_hit(r, point_hit(p, closest_parameter(a, p), tb, false), eps);
   }
 }

@@ -88,16 +88,14 @@ std::vector<SplitPoint> split_points(const std::vector<Curve>& curves, double ep
 // A sweep in x compares each point with the following ones less than eps further right.
 std::vector<int> merge_points(const std::vector<SplitPoint>& splits, double eps,
                               std::vector<Vec2>& vertices) {
-  std::vector<int> order(splits.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return splits[a].p.x != splits[b].p.x ? splits[a].p.x < splits[b].p.x : a < b;
-  });
+  std::vector<std::pair<double, int>> order(splits.size());
+  for (size_t i = 0; i < splits.size(); ++i) order[i] = {splits[i].p.x, int(i)};
+  std::sort(order.begin(), order.end());
   UnionFind uf(splits.size());
   for (size_t i = 0; i < order.size(); ++i) {
-    const Vec2 p = splits[order[i]].p;
-    for (size_t j = i + 1; j < order.size() && splits[order[j]].p.x - p.x <= eps; ++j)
-      if (distance(p, splits[order[j]].p) <= eps) uf.unite(order[i], order[j]);
+    const Vec2 p = splits[order[i].second].p;
+    for (size_t j = i + 1; j < order.size() && order[j].first - p.x <= eps; ++j)
+      if (distance(p, splits[order[j].second].p) <= eps) uf.unite(order[i].second, order[j].second);
   }
   std::vector<int> vertex_of(splits.size()), vertex_of_root(splits.size(), -1);
   for (size_t i = 0; i < splits.size(); ++i) {
@@ -158,26 +156,36 @@ void merge_coincident_edges(Arrangement& arr, std::vector<ArrangementEdge>& piec
 void build_edges(Arrangement& arr, const std::vector<Curve>& curves, const std::vector<int>& ids,
                  const std::vector<SplitPoint>& splits, const std::vector<int>& vertex_of,
                  double eps) {
-  std::vector<std::vector<int>> per_curve(curves.size());
-  for (size_t i = 0; i < splits.size(); ++i) per_curve[splits[i].curve].push_back(int(i));
-  std::vector<ArrangementEdge> pieces;
-  for (size_t c = 0; c < curves.size(); ++c) {
-    auto& list = per_curve[c];
-    std::sort(list.begin(), list.end(), [&](int a, int b) { return splits[a].t < splits[b].t; });
-    for (size_t k = 0; k + 1 < list.size(); ++k) {
-      const int a = list[k], b = list[k + 1];
-      if (vertex_of[a] == vertex_of[b] && !curves[c].is_full_circle()) continue;
-      if (vertex_of[a] == vertex_of[b] && splits[b].t - splits[a].t < 0.5) continue;
-      ArrangementEdge e;
-      e.u = vertex_of[a];
-      e.v = vertex_of[b];
-      e.curve = piece_of(curves[c], splits[a].t, splits[b].t, arr.vertices[e.u], arr.vertices[e.v]);
-      e.source = int(c);
-      e.tangent_u = tangent_at(curves[c], splits[a].t);
-      e.tangent_v = tangent_at(curves[c], splits[b].t);
-      e.labels.push_back({ids[c], true});
-      pieces.push_back(std::move(e));
+  // Split points along each curve in order: one sort of (curve, t, index) triples.
+  struct Along {
+    int curve;
+    double t;
+    int index;
+    bool operator<(const Along& o) const {
+      return curve != o.curve ? curve < o.curve : (t != o.t ? t < o.t : index < o.index);
     }
+  };
+  std::vector<Along> along(splits.size());
+  for (size_t i = 0; i < splits.size(); ++i) along[i] = {splits[i].curve, splits[i].t, int(i)};
+  std::sort(along.begin(), along.end());
+  std::vector<ArrangementEdge> pieces;
+  for (size_t k = 0; k + 1 < along.size(); ++k) {
+    if (along[k].curve != along[k + 1].curve) continue;
+    const size_t c = size_t(along[k].curve);
+    const int a = along[k].index, b = along[k + 1].index;
+    // Consecutive points at one vertex make no edge, except a full circle's only piece.
+    if (vertex_of[a] == vertex_of[b] &&
+        (!curves[c].is_full_circle() || splits[b].t - splits[a].t < 0.5))
+      continue;
+    ArrangementEdge e;
+    e.u = vertex_of[a];
+    e.v = vertex_of[b];
+    e.curve = piece_of(curves[c], splits[a].t, splits[b].t, arr.vertices[e.u], arr.vertices[e.v]);
+    e.source = int(c);
+    e.tangent_u = tangent_at(curves[c], splits[a].t);
+    e.tangent_v = tangent_at(curves[c], splits[b].t);
+    e.labels.push_back({ids[c], true});
+    pieces.push_back(std::move(e));
   }
   merge_coincident_edges(arr, pieces, eps);
 }
