@@ -5,6 +5,7 @@
 #include <random>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
 #include "cslice/classify.hpp"
 #include "cslice/slice.hpp"
 #include "support/random_parts.hpp"
@@ -53,6 +54,54 @@ int check_against_classify(const Pair& pair, double theta, int points, std::mt19
     if (::testing::Test::HasFailure()) return decisive;
   }
   return decisive;
+}
+
+// The pair file with every point of both parts moved by a rotation about the origin and
+// then a translation (bulges are unchanged by rigid motions).
+std::string moved_pair_json(const std::string& name, double angle, Vec2 shift) {
+  std::ifstream in(std::string(CSLICE_SOURCE_DIR) + "/examples/" + name + ".json");
+  nlohmann::json j = nlohmann::json::parse(in);
+  const Transform t(Pose{shift.x, shift.y, angle});
+  auto move = [&](nlohmann::json& xy) {
+    const Vec2 p = t.apply({xy[0].get<double>(), xy[1].get<double>()});
+    xy[0] = p.x;
+    xy[1] = p.y;
+  };
+  for (const char* part : {"moving", "fixed"}) {
+    for (auto& loop : j[part]["loops"]) {
+      if (loop.is_object()) {
+        move(loop["circle"]);
+      } else {
+        for (auto& vertex : loop) move(vertex);
+      }
+    }
+  }
+  return j.dump();
+}
+
+struct SliceSummary {
+  int bounded = 0, unbounded = 0, realizable = 0, degenerate = 0;
+  double bounded_area = 0.0;
+};
+
+SliceSummary summary_of(const Slice& s) {
+  SliceSummary out;
+  for (const FreeComponent& c : s.free_components) {
+    (c.bounded ? out.bounded : out.unbounded)++;
+    if (c.bounded) out.bounded_area += c.area;
+  }
+  out.realizable = int(s.contact_graph.nodes.size());
+  out.degenerate = int(s.degenerate.size());
+  return out;
+}
+
+void expect_same_summary(const Slice& a, const Slice& b, const std::string& what) {
+  const SliceSummary x = summary_of(a), y = summary_of(b);
+  EXPECT_EQ(x.bounded, y.bounded) << what;
+  EXPECT_EQ(x.unbounded, y.unbounded) << what;
+  EXPECT_EQ(x.realizable, y.realizable) << what;
+  EXPECT_EQ(x.degenerate, y.degenerate) << what;
+  EXPECT_NEAR(x.bounded_area, y.bounded_area, 1e-9 * (1.0 + x.bounded_area)) << what;
 }
 
 double peg_side(double theta) {
@@ -220,4 +269,32 @@ TEST(SliceOracle, NearlyTangentArcsCrossingTwiceStayConsistent) {
   const Slice s = compute_slice(pair, 0.3);
   ASSERT_EQ(s.free_components.size(), 1u);
   EXPECT_FALSE(s.free_components[0].bounded);
+}
+
+TEST(SliceInvariance, SymmetricFixturePartGivesTheSameSliceAHalfTurnLater) {
+  // The fixture's part is symmetric under a half turn about its origin (paper 2.3: it also
+  // engages upside down), so the slices at theta and theta + pi coincide.
+  const Pair pair = load_example("fixture");
+  for (double theta : {0.0, 0.3, 1.2, 2.0}) {
+    const Slice a = compute_slice(pair, theta), b = compute_slice(pair, theta + kPi);
+    expect_same_summary(a, b, "theta " + std::to_string(theta));
+    EXPECT_NEAR(a.blocked_area, b.blocked_area, 1e-9 * a.blocked_area);
+  }
+}
+
+TEST(SliceInvariance, MovingTheWholeSceneKeepsEverySlice) {
+  // Rotating both parts about the origin by phi rotates every slice by phi; translating both
+  // (the moving part within its body frame) shifts it. Counts and areas are unchanged.
+  for (const char* name : {"knee", "cam", "fixture", "fastener", "square-peg-hole"}) {
+    const Pair pair = load_example(name);
+    for (const auto& [phi, shift] :
+         {std::pair<double, Vec2>{kPi, {0.0, 0.0}}, std::pair<double, Vec2>{0.7, {2.5, -1.25}}}) {
+      const Pair moved = *parse_pair(moved_pair_json(name, phi, shift), name).pair;
+      for (double theta : {0.0, 0.9}) {
+        // The moving part's body frame turned by phi too: theta means the same placement.
+        expect_same_summary(compute_slice(pair, theta), compute_slice(moved, theta),
+                            std::string(name) + " rotated " + std::to_string(phi));
+      }
+    }
+  }
 }
