@@ -38,6 +38,7 @@ std::string summary_row(const std::string& label, int width, const std::string& 
 void register_info(CLI::App& app);
 void register_classify(CLI::App& app);
 void register_render(CLI::App& app);
+void register_equivalent(CLI::App& app);
 void register_slice(CLI::App& app);
 
 }  // namespace cslice::cli

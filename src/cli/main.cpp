@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   cslice::cli::register_info(app);
   cslice::cli::register_classify(app);
   cslice::cli::register_render(app);
+  cslice::cli::register_equivalent(app);
   cslice::cli::register_slice(app);
   try {
     app.parse(argc, argv);
@@ -19,7 +20,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : cslice::cli::kExitBadInput;
   } catch (const cslice::cli::ExitError& e) {
-    std::cerr << "cslice: " << e.what() << "\n";
+    if (*e.what() != '\0') std::cerr << "cslice: " << e.what() << "\n";
     return e.code;
   } catch (const std::exception& e) {
     std::cerr << "cslice: internal error: " << e.what() << "\n";
