@@ -3,6 +3,7 @@
 // precomputation beyond the pair itself, so it is simple enough to be obviously right.
 #pragma once
 
+#include <memory>
 #include <string_view>
 #include <vector>
 
@@ -23,6 +24,10 @@ Placement classify(const Pair& pair, const Pose& pose);
 class PlacementTester {
  public:
   explicit PlacementTester(const Pair& pair);
+  ~PlacementTester();
+  // Not copyable: the indexes carry scratch state; make one tester per thread.
+  PlacementTester(const PlacementTester&) = delete;
+  PlacementTester& operator=(const PlacementTester&) = delete;
   Placement classify(const Pose& pose);
   // Smallest distance between the placed boundaries (0 when they meet).
   double boundary_distance(const Pose& pose);
@@ -32,17 +37,20 @@ class PlacementTester {
   bool interiors_overlap();
   bool boundaries_within(double distance_limit) const;
   bool moving_contains(Vec2 p) const;
+  bool near_moving_boundary(Vec2 p, double limit) const;
   bool piece_inside_other(const Curve& edge, std::vector<double>& splits,
                           bool edge_is_moving) const;
 
+  struct Indexes;  // curves bucketed by height (src/parts/row_index.hpp)
+
   const Pair& pair_;
   std::vector<Curve> fixed_edges_;
-  std::vector<Box> fixed_boxes_;
-  std::vector<Curve> body_edges_;      // moving part in its body frame
-  std::vector<int> body_loop_starts_;  // first edge of each moving loop, plus the end
-  std::vector<Curve> moving_edges_;    // placed copy, rebuilt per query
+  std::vector<Curve> body_edges_;    // moving part in its body frame
+  std::vector<Curve> moving_edges_;  // placed copy, rebuilt per query
   std::vector<Box> moving_boxes_;
   Box moving_box_;
+  Transform placement_;
+  std::unique_ptr<Indexes> indexes_;  // of the fixed part, and of the moving body
   std::vector<std::vector<double>> moving_splits_, fixed_splits_;  // reused scratch
 };
 

@@ -7,10 +7,15 @@
 // midpoint decides. A midpoint within the geometric epsilon of the other boundary belongs
 // to a touching piece (sliding or perfect-fit contact) and decides nothing. This needs no
 // case analysis of vertex contacts: an edge poking past a vertex leaves a piece inside.
+//
+// For large parts the curves are bucketed by height (RowIndex), which only skips curves that
+// cannot matter: those out of reach of a box or a point. The moving part's index is built
+// once in its body frame; points are carried into that frame instead.
 #include <algorithm>
 
 #include "cslice/classify.hpp"
 #include "parts/loop_queries.hpp"
+#include "parts/row_index.hpp"
 
 namespace cslice {
 
@@ -26,42 +31,48 @@ std::string_view to_string(Placement p) {
   return "?";
 }
 
+struct PlacementTester::Indexes {
+  RowIndex fixed, body;
+};
+
 PlacementTester::PlacementTester(const Pair& pair) : pair_(pair) {
-  for (const Loop& loop : pair.fixed.loops) {
-    for (const Curve& c : loop.edges) {
-      fixed_edges_.push_back(c);
-      fixed_boxes_.push_back(bounding_box(c));
-    }
-  }
-  for (const Loop& loop : pair.moving.loops) {
-    body_loop_starts_.push_back(static_cast<int>(body_edges_.size()));
+  for (const Loop& loop : pair.fixed.loops)
+    fixed_edges_.insert(fixed_edges_.end(), loop.edges.begin(), loop.edges.end());
+  for (const Loop& loop : pair.moving.loops)
     body_edges_.insert(body_edges_.end(), loop.edges.begin(), loop.edges.end());
-  }
-  body_loop_starts_.push_back(static_cast<int>(body_edges_.size()));
+  indexes_ = std::make_unique<Indexes>(Indexes{RowIndex(fixed_edges_), RowIndex(body_edges_)});
   moving_edges_.resize(body_edges_.size());
   moving_boxes_.resize(body_edges_.size());
   moving_splits_.resize(body_edges_.size());
   fixed_splits_.resize(fixed_edges_.size());
 }
 
+PlacementTester::~PlacementTester() = default;
+
 void PlacementTester::place(const Pose& pose) {
-  const Transform t(pose);
+  placement_ = Transform(pose);
   moving_box_ = Box{};
   for (size_t i = 0; i < body_edges_.size(); ++i) {
-    moving_edges_[i] = transformed(body_edges_[i], t);
+    moving_edges_[i] = transformed(body_edges_[i], placement_);
     moving_boxes_[i] = bounding_box(moving_edges_[i]);
     moving_box_.add(moving_boxes_[i]);
   }
 }
 
+namespace {
+// The world point p seen in the moving part's body frame.
+Vec2 to_body(const Transform& t, Vec2 p) {
+  const Vec2 d = p - t.offset;
+  return {t.c * d.x + t.s * d.y, -t.s * d.x + t.c * d.y};
+}
+}  // namespace
+
 bool PlacementTester::moving_contains(Vec2 p) const {
-  bool inside = false;
-  for (size_t k = 0; k + 1 < body_loop_starts_.size(); ++k) {
-    const std::span<const Curve> loop(moving_edges_.data() + body_loop_starts_[k],
-                                      moving_edges_.data() + body_loop_starts_[k + 1]);
-    if (loop_encloses(loop, p)) inside = !inside;
-  }
-  return inside;
+  return indexes_->body.encloses(to_body(placement_, p));
+}
+
+bool PlacementTester::near_moving_boundary(Vec2 p, double limit) const {
+  return indexes_->body.near(to_body(placement_, p), limit);
 }
 
 // Cuts `edge` at `splits` and reports whether any piece lies inside the other part, deeper
@@ -75,11 +86,12 @@ bool PlacementTester::piece_inside_other(const Curve& edge, std::vector<double>&
   for (size_t k = 0; k + 1 < splits.size(); ++k) {
     if (splits[k + 1] <= splits[k]) continue;
     const Vec2 mid = point_at(edge, 0.5 * (splits[k] + splits[k + 1]));
-    const bool inside = edge_is_moving ? contains_point(pair_.fixed, mid) : moving_contains(mid);
+    const bool inside = edge_is_moving ? indexes_->fixed.encloses(mid) != pair_.fixed.enclosure
+                                       : moving_contains(mid);
     if (!inside) continue;
-    const double depth = edge_is_moving ? distance_to_boundary(pair_.fixed, mid)
-                                        : distance_to_curves(moving_edges_, mid);
-    if (depth > eps) return true;
+    const bool shallow =
+        edge_is_moving ? indexes_->fixed.near(mid, eps) : near_moving_boundary(mid, eps);
+    if (!shallow) return true;
   }
   return false;
 }
@@ -88,34 +100,36 @@ bool PlacementTester::interiors_overlap() {
   const double eps = pair_.tol.geometric;
   for (auto& s : moving_splits_) s.clear();
   for (auto& s : fixed_splits_) s.clear();
-  for (size_t i = 0; i < moving_edges_.size(); ++i) {
-    const Box mb = moving_boxes_[i].inflated(eps);
-    for (size_t j = 0; j < fixed_edges_.size(); ++j) {
-      if (!mb.overlaps(fixed_boxes_[j])) continue;
+  bool same_side = false;
+  for (size_t i = 0; i < moving_edges_.size() && !same_side; ++i) {
+    indexes_->fixed.for_each_meeting(moving_boxes_[i].inflated(eps), [&](int j) {
       const Intersection x = intersect(moving_edges_[i], fixed_edges_[j], eps);
-      if (x.kind == IntersectionKind::overlapping && x.same_direction) return true;
+      if (x.kind == IntersectionKind::overlapping && x.same_direction) same_side = true;
       for (int h = 0; h < x.count; ++h) {
         moving_splits_[i].insert(moving_splits_[i].end(), {x.hits[h].ta0, x.hits[h].ta1});
         fixed_splits_[j].insert(fixed_splits_[j].end(), {x.hits[h].tb0, x.hits[h].tb1});
       }
-    }
+    });
   }
+  if (same_side) return true;
   for (size_t i = 0; i < moving_edges_.size(); ++i)
     if (piece_inside_other(moving_edges_[i], moving_splits_[i], true)) return true;
-  for (size_t j = 0; j < fixed_edges_.size(); ++j)
-    if (piece_inside_other(fixed_edges_[j], fixed_splits_[j], false)) return true;
-  return false;
+  // A fixed edge away from the (bounded) moving part has no piece inside it.
+  bool inside = false;
+  indexes_->fixed.for_each_meeting(moving_box_.inflated(eps), [&](int j) {
+    inside = inside || piece_inside_other(fixed_edges_[j], fixed_splits_[j], false);
+  });
+  return inside;
 }
 
 bool PlacementTester::boundaries_within(double distance_limit) const {
-  for (size_t i = 0; i < moving_edges_.size(); ++i) {
-    const Box mb = moving_boxes_[i].inflated(distance_limit);
-    for (size_t j = 0; j < fixed_edges_.size(); ++j) {
-      if (!mb.overlaps(fixed_boxes_[j])) continue;
-      if (distance_between(moving_edges_[i], fixed_edges_[j]) <= distance_limit) return true;
-    }
+  bool within = false;
+  for (size_t i = 0; i < moving_edges_.size() && !within; ++i) {
+    indexes_->fixed.for_each_meeting(moving_boxes_[i].inflated(distance_limit), [&](int j) {
+      within = within || distance_between(moving_edges_[i], fixed_edges_[j]) <= distance_limit;
+    });
   }
-  return false;
+  return within;
 }
 
 Placement PlacementTester::classify(const Pose& pose) {

@@ -240,8 +240,13 @@ void order_outgoing(Arrangement& arr, const std::vector<TangentTouch>& tangents,
                        curvature_overrides(dirs[j - 1], dirs[j], tangents, angular_eps);
          --j)
       std::swap(dirs[j - 1], dirs[j]);
-  arr.outgoing.assign(arr.vertices.size(), {});
-  for (const Direction& x : dirs) arr.outgoing[x.vertex].push_back(x.half_edge);
+  // dirs is sorted by vertex: record where each vertex's run starts.
+  arr.outgoing_start.assign(arr.vertices.size() + 1, 0);
+  for (const Direction& x : dirs) ++arr.outgoing_start[x.vertex + 1];
+  for (size_t v = 0; v < arr.vertices.size(); ++v)
+    arr.outgoing_start[v + 1] += arr.outgoing_start[v];
+  arr.outgoing_edges.resize(dirs.size());
+  for (size_t i = 0; i < dirs.size(); ++i) arr.outgoing_edges[i] = dirs[i].half_edge;
 }
 
 // Links each half-edge to the next around its left face: at its target, the half-edge just
@@ -249,12 +254,14 @@ void order_outgoing(Arrangement& arr, const std::vector<TangentTouch>& tangents,
 void link_half_edges(Arrangement& arr) {
   const size_t n = 2 * arr.edges.size();
   std::vector<int> position(n);
-  for (const auto& out : arr.outgoing)
+  for (int v = 0; v < int(arr.vertices.size()); ++v) {
+    const std::span<const int> out = arr.outgoing(v);
     for (size_t i = 0; i < out.size(); ++i) position[out[i]] = int(i);
+  }
   arr.next.assign(n, -1);
   for (size_t h = 0; h < n; ++h) {
     const int twin = int(h) ^ 1;
-    const auto& out = arr.outgoing[arr.target(int(h))];
+    const std::span<const int> out = arr.outgoing(arr.target(int(h)));
     const int deg = int(out.size());
     arr.next[h] = out[(position[twin] - 1 + deg) % deg];
   }

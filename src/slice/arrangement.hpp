@@ -3,6 +3,7 @@
 // and faces traced from a half-edge structure, holes attached to the faces around them.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "cslice/geometry.hpp"
@@ -44,7 +45,13 @@ struct ArrangementFace {
 // Half-edge h runs along edge h / 2, forward (u to v) when h is even.
 struct Arrangement {
   std::vector<Vec2> vertices;
-  std::vector<std::vector<int>> outgoing;  // per vertex, half-edges leaving it, counterclockwise
+  // Half-edges leaving each vertex, counterclockwise: those of vertex v are
+  // outgoing_edges[outgoing_start[v] .. outgoing_start[v + 1]).
+  std::vector<int> outgoing_start, outgoing_edges;
+  std::span<const int> outgoing(int v) const {
+    return {outgoing_edges.data() + outgoing_start[v],
+            outgoing_edges.data() + outgoing_start[v + 1]};
+  }
   std::vector<ArrangementEdge> edges;
   std::vector<int> next;      // per half-edge: the next one around its face
   std::vector<int> cycle_of;  // per half-edge

@@ -56,7 +56,13 @@ class SliceBuilder {
             if (Arrangement::left_is_blocked(h, l)) blocked_[f] = true;
       if (blocked_[f]) continue;
       samples_[f] = face_sample(arr_, int(f), pair_.tol);
-      blocked_[f] = blocked_at(samples_[f]);
+      // Blocked space lies inside the box of all contact segments, and the unbounded face's
+      // sample lies beyond it: there the parts are apart, inside an enclosure's material when
+      // the fixed part is one. Only an empty arrangement needs the direct test.
+      if (!arr_.faces[f].bounded && !arr_.edges.empty())
+        blocked_[f] = pair_.fixed.enclosure;
+      else
+        blocked_[f] = blocked_at(samples_[f]);
     }
   }
 
@@ -95,7 +101,7 @@ class SliceBuilder {
   // their blocked sides on one side (one contact curve continuing through v, possibly as
   // two segments meeting end to end) block the whole half plane on that side.
   bool sectors_explained_locally(int v) const {
-    const std::vector<int>& out = arr_.outgoing[v];
+    const std::span<const int> out = arr_.outgoing(int(v));
     const int d = int(out.size());
     std::vector<Vec2> dir(d);
     for (int i = 0; i < d; ++i) dir[i] = arr_.direction(out[i]);
@@ -127,7 +133,7 @@ class SliceBuilder {
 
   void find_degenerate_vertices() {
     for (size_t v = 0; v < arr_.vertices.size(); ++v) {
-      const std::vector<int>& out = arr_.outgoing[v];
+      const std::span<const int> out = arr_.outgoing(int(v));
       if (out.empty()) continue;
       bool all_blocked = true;
       for (int h : out)
@@ -212,7 +218,7 @@ class SliceBuilder {
     };
     for (size_t v = 0; v < arr_.vertices.size(); ++v) {
       std::vector<int> ids;
-      for (int h : arr_.outgoing[v])
+      for (int h : arr_.outgoing(int(v)))
         if (realizable_[h / 2])
           for (int id : label_ids(h / 2)) ids.push_back(id);
       std::sort(ids.begin(), ids.end());
