@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <tuple>
 #include <unordered_map>
 
 #include "parts/loop_queries.hpp"
@@ -59,8 +60,42 @@ std::vector<std::pair<int, int>> candidate_pairs(const std::vector<Box>& boxes) 
   return pairs;
 }
 
+// A piece shared by two curves (collinear or co-circular within eps), as parameter ranges.
+struct SharedPiece {
+  int a, b;
+  double a_lo, a_hi, b_lo, b_hi;
+};
+
+// Curves the intersection step calls overlapping must be cut at the same vertices along the
+// shared piece, or their pieces would not coincide: two lines closer than eps crossed by a
+// third at a shallow angle get their crossings at points farther apart than eps. So every
+// split point of one curve inside a shared piece is copied to the other, at the same point.
+// Two passes carry points along chains of overlapping curves.
+void share_split_points(const std::vector<Curve>& curves, const std::vector<SharedPiece>& shared,
+                        std::vector<SplitPoint>& splits) {
+  if (shared.empty()) return;
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<std::vector<int>> on_curve(curves.size());
+    for (size_t k = 0; k < splits.size(); ++k) on_curve[splits[k].curve].push_back(int(k));
+    std::vector<SplitPoint> added;
+    for (const SharedPiece& sp : shared) {
+      for (const auto& [from, to, lo, hi] :
+           {std::tuple{sp.a, sp.b, sp.a_lo, sp.a_hi}, std::tuple{sp.b, sp.a, sp.b_lo, sp.b_hi}}) {
+        for (int k : on_curve[from]) {
+          const SplitPoint& p = splits[k];
+          if (p.t < lo || p.t > hi) continue;
+          added.push_back({to, closest_parameter(curves[to], p.p), p.p, -1});
+        }
+      }
+    }
+    if (added.empty()) return;
+    splits.insert(splits.end(), added.begin(), added.end());
+  }
+}
+
 std::vector<SplitPoint> split_points(const std::vector<Curve>& curves, double eps) {
   std::vector<SplitPoint> splits;
+  std::vector<SharedPiece> shared;
   std::vector<Box> boxes;
   for (size_t i = 0; i < curves.size(); ++i) {
     splits.push_back({int(i), 0.0, curves[i].from});
@@ -77,9 +112,12 @@ std::vector<SplitPoint> split_points(const std::vector<Curve>& curves, double ep
       if (h.is_piece) {
         splits.push_back({i, h.ta1, h.point_end});
         splits.push_back({j, h.tb1, h.point_end});
+        shared.push_back({i, j, std::min(h.ta0, h.ta1), std::max(h.ta0, h.ta1),
+                          std::min(h.tb0, h.tb1), std::max(h.tb0, h.tb1)});
       }
     }
   }
+  share_split_points(curves, shared, splits);
   return splits;
 }
 
