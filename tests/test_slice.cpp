@@ -9,6 +9,7 @@
 #include "cslice/classify.hpp"
 #include "cslice/slice.hpp"
 #include "support/random_parts.hpp"
+#include "support/random_polygons.hpp"
 
 using namespace cslice;
 
@@ -296,5 +297,37 @@ TEST(SliceInvariance, MovingTheWholeSceneKeepsEverySlice) {
                             std::string(name) + " rotated " + std::to_string(phi));
       }
     }
+  }
+}
+
+// KNOWN OPEN BUG (disabled so the suite stays green; run with --gtest_also_run_disabled_tests).
+// Smooth stars with half their edges arcs following the contour, 2,000 edges per part (the
+// benchmark's curved pair): the slice loses its unbounded free component. Near the leak,
+// contact arcs of neighbouring moving arcs (joined by a tiny reflex turn) cross at about
+// 3e-4 rad just before their ends, leaving short tails; the outer face walk of the main
+// component passes into blocked space somewhere along them. Not yet located.
+TEST(SliceOracle, DISABLED_CurvedStarsWithTinyReflexTurnsKeepTheirFreeSpace) {
+  for (unsigned seed = 2026;; ++seed) {
+    std::mt19937 rng(seed + 2000u);
+    testkit::StarOptions f;
+    f.vertices = 2000;
+    f.radius = 3.0;
+    f.radial_jitter = 0.0;
+    f.angle_jitter = 0.8;
+    f.lobes = 3;
+    f.lobe_depth = 0.3;
+    f.arc_fraction = 0.5;
+    f.min_sagitta = 1e-7;
+    testkit::StarOptions m = f;
+    m.radius = 1.0;
+    m.center = {0.1, -0.2};
+    const testkit::LoopVertices fixed = testkit::random_star(rng, f);
+    const testkit::LoopVertices moving = testkit::random_star(rng, m);
+    LoadResult r = parse_pair(testkit::pair_json("curved", {moving}, {fixed}), "curved");
+    if (!r.ok()) continue;
+    const Slice s = compute_slice(*r.pair, 0.7);
+    ASSERT_EQ(s.free_components.size(), 1u);
+    EXPECT_FALSE(s.free_components[0].bounded);
+    return;
   }
 }
