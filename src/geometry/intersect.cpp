@@ -96,6 +96,17 @@ double segment_parameter_within(const Curve& s, Vec2 p, double eps) {
   return std::clamp(t, 0.0, 1.0);
 }
 
+// Adds p, a point on both curves' carriers, as a hit when it lies within eps of both curves'
+// extents.
+void add_if_on_both(Intersection& r, const Curve& a, const Curve& b, Vec2 p, bool tangent,
+                    double eps) {
+  auto parameter = [&](const Curve& c) {
+    return c.is_arc() ? arc_parameter_within(c, p, eps) : segment_parameter_within(c, p, eps);
+  };
+  const double ta = parameter(a), tb = parameter(b);
+  if (!std::isnan(ta) && !std::isnan(tb)) add_hit(r, point_hit(p, ta, tb, tangent), eps);
+}
+
 // Collinear segments (both within eps of one carrier line): the shared piece, or a single
 // touching point when the shared part is shorter than eps.
 void collinear_overlap(Intersection& r, const Curve& a, const Curve& b, double eps) {
@@ -201,15 +212,11 @@ Intersection intersect_segment_arc(const Curve& s, const Curve& arc, double eps)
   if (h <= arc.radius + eps) {
     if (h >= arc.radius - eps) {
       const Vec2 p = h > 0.0 ? arc.center + (arc.radius / h) * (q - arc.center) : q;
-      const double ts = segment_parameter_within(s, p, eps), ta = arc_parameter_within(arc, p, eps);
-      if (!std::isnan(ts) && !std::isnan(ta)) add_hit(r, point_hit(p, ts, ta, true), eps);
+      add_if_on_both(r, s, arc, p, true, eps);
     } else {
       const double k = std::sqrt(arc.radius * arc.radius - h * h);
       for (double sign : {-1.0, 1.0}) {
-        const Vec2 p = q + (sign * k) * dir;
-        const double ts = segment_parameter_within(s, p, eps),
-                     ta = arc_parameter_within(arc, p, eps);
-        if (!std::isnan(ts) && !std::isnan(ta)) add_hit(r, point_hit(p, ts, ta, false), eps);
+        add_if_on_both(r, s, arc, q + (sign * k) * dir, false, eps);
       }
     }
     add_endpoint_touches(r, s, arc, eps);
@@ -247,12 +254,7 @@ Intersection intersect_arc_arc(const Curve& a, const Curve& b, double eps) {
       points[n++] = a.center + along * u + h * perp_left(u);
       points[n++] = a.center + along * u - h * perp_left(u);
     }
-    for (int i = 0; i < n; ++i) {
-      const double ta = arc_parameter_within(a, points[i], eps);
-      const double tb = arc_parameter_within(b, points[i], eps);
-      if (!std::isnan(ta) && !std::isnan(tb))
-        add_hit(r, point_hit(points[i], ta, tb, tangent), eps);
-    }
+    for (int i = 0; i < n; ++i) add_if_on_both(r, a, b, points[i], tangent, eps);
     add_endpoint_touches(r, a, b, eps);
   }
   finish_kind(r);
