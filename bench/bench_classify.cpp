@@ -13,19 +13,11 @@
 
 #include "cslice/classify.hpp"
 #include "cslice/pair.hpp"
+#include "support/examples.hpp"
 
 namespace {
 
-cslice::Pair load_example(const std::string& name) {
-  // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on a chain of operator+.
-  std::string path = CSLICE_SOURCE_DIR;
-  path += "/examples/";
-  path += name;
-  path += ".json";
-  cslice::LoadResult r = cslice::load_pair(path);
-  if (!r.ok()) throw std::runtime_error(r.error->message());
-  return std::move(*r.pair);
-}
+using cslice::testkit::load_example;
 
 // Bounding box of the moving part turned by theta about its body origin.
 cslice::Box turned_box(const cslice::Part& part, double theta) {

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "cslice/slice.hpp"
+#include "support/examples.hpp"
 #include "support/random_polygons.hpp"
 
 namespace {
@@ -39,15 +40,7 @@ using Polygon = CGAL::Polygon_2<Kernel>;
 constexpr double kStarTheta = 0.7;
 constexpr double kExampleThetas[] = {0.0, 0.5, 1.9};
 
-cslice::Pair load_example(const std::string& name) {
-  std::string path = CSLICE_SOURCE_DIR;  // appended piecewise: GCC 12 -Wrestrict false alarm
-  path += "/examples/";
-  path += name;
-  path += ".json";
-  cslice::LoadResult r = cslice::load_pair(path);
-  if (!r.ok()) throw std::runtime_error(r.error->message());
-  return std::move(*r.pair);
-}
+using cslice::testkit::load_example;
 
 struct BenchPair {
   LoopVertices moving, fixed;

@@ -3,13 +3,14 @@
 
 #include "cslice/equivalence.hpp"
 #include "support/cli_run.hpp"
+#include "support/examples.hpp"
 
 using namespace cslice;
 
 namespace {
 
 Pair example(const std::string& name) {
-  return *load_pair(std::string(CSLICE_SOURCE_DIR) + "/examples/" + name + ".json").pair;
+  return testkit::load_example(name);
 }
 
 // A slice holding only a contact graph: `n` nodes, all with the same label, and the edges.
@@ -84,8 +85,7 @@ class EquivalenceCli : public testkit::ScratchDirTest {
 };
 
 TEST_F(EquivalenceCli, AnswersAndExitStatus) {
-  const std::string pair =
-      testkit::quoted(std::string(CSLICE_SOURCE_DIR) + "/examples/fastener.json");
+  const std::string pair = testkit::quoted(testkit::example_path("fastener"));
   const auto same = testkit::run_cli("equivalent " + pair + " 0.4 0.4000001", dir_);
   EXPECT_EQ(same.status, 0);
   EXPECT_EQ(same.out, "equivalent\n");

@@ -8,14 +8,13 @@
 
 #include "cslice/classify.hpp"
 #include "cslice/pair.hpp"
+#include "support/examples.hpp"
 
 namespace cslice {
 namespace {
 
 Pair example(const std::string& name) {
-  LoadResult r = load_pair(std::string(CSLICE_SOURCE_DIR) + "/examples/" + name + ".json");
-  if (!r.ok()) ADD_FAILURE() << r.error->message();
-  return r.ok() ? std::move(*r.pair) : Pair{};
+  return testkit::load_example(name);
 }
 
 int features(const Pair& p) {

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include "cslice/classify.hpp"
 #include "cslice/slice.hpp"
+#include "support/examples.hpp"
 #include "support/random_parts.hpp"
 #include "support/random_polygons.hpp"
 
@@ -15,11 +16,7 @@ using namespace cslice;
 
 namespace {
 
-Pair load_example(const std::string& name) {
-  LoadResult r = load_pair(std::string(CSLICE_SOURCE_DIR) + "/examples/" + name + ".json");
-  if (!r.ok()) throw std::runtime_error(r.error->message());
-  return *r.pair;
-}
+using testkit::load_example;
 
 // Checks membership in a free component against classify at random points around the
 // pair; points classify calls contact (within the tolerance band) may go either way.
@@ -60,7 +57,7 @@ int check_against_classify(const Pair& pair, double theta, int points, std::mt19
 // The pair file with every point of both parts moved by a rotation about the origin and
 // then a translation (bulges are unchanged by rigid motions).
 std::string moved_pair_json(const std::string& name, double angle, Vec2 shift) {
-  std::ifstream in(std::string(CSLICE_SOURCE_DIR) + "/examples/" + name + ".json");
+  std::ifstream in(testkit::example_path(name));
   nlohmann::json j = nlohmann::json::parse(in);
   const Transform t(Pose{shift.x, shift.y, angle});
   auto move = [&](nlohmann::json& xy) {

@@ -16,6 +16,7 @@
 #include "cslice/slice.hpp"
 #include "cslice/slice_io.hpp"
 #include "support/cli_run.hpp"
+#include "support/examples.hpp"
 
 namespace cslice {
 namespace {
@@ -475,7 +476,7 @@ class CliSlice : public testkit::ScratchDirTest {
 
   RunResult run(const std::string& args) { return run_cli("slice " + args, dir_); }
   static std::string example(const std::string& name) {
-    return quoted(std::string(CSLICE_SOURCE_DIR) + "/examples/" + name + ".json");
+    return quoted(testkit::example_path(name));
   }
   std::string path(const std::string& name) const { return quoted((dir_ / name).string()); }
   bool exists(const std::string& name) const { return fs::exists(dir_ / name); }
