@@ -62,13 +62,6 @@ struct Part {
 // Assumes the loops were validated: closed, simple, not crossing each other.
 void finish_part(Part& part);
 
-// Point-in-material test for a point not on the boundary: true when p lies in the part's
-// material (inside an outer loop and outside its holes; outside every loop for an
-// enclosure). Points within eps of the boundary give either answer.
-bool contains_point(const Part& part, Vec2 p);
-// Distance from p to the nearest boundary curve of the part.
-double distance_to_boundary(const Part& part, Vec2 p);
-
 // The part moved by a pose (every curve rotated then translated); features keep their indices.
 Part placed(const Part& part, const Pose& pose);
 

@@ -73,23 +73,6 @@ double distance_to_curves(std::span<const Curve> edges, Vec2 p) {
   return best;
 }
 
-bool contains_point(const Part& part, Vec2 p) {
-  if (!part.enclosure && !part.box.empty()) {
-    if (p.x < part.box.lo.x || p.x > part.box.hi.x || p.y < part.box.lo.y || p.y > part.box.hi.y)
-      return false;
-  }
-  bool inside = false;
-  for (const Loop& loop : part.loops)
-    if (loop_encloses(loop.edges, p)) inside = !inside;
-  return inside != part.enclosure;
-}
-
-double distance_to_boundary(const Part& part, Vec2 p) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const Loop& loop : part.loops) best = std::min(best, distance_to_curves(loop.edges, p));
-  return best;
-}
-
 Part placed(const Part& part, const Pose& pose) {
   const Transform t(pose);
   Part out = part;

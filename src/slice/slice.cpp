@@ -248,16 +248,15 @@ class SliceBuilder {
 }  // namespace
 
 int Slice::locate(Vec2 p) const {
+  // Even-odd over all boundary cycles of a component: the parity of their union.
   for (const FreeComponent& c : free_components) {
-    bool inside = c.bounded ? false : true;
-    bool near = false;
-    for (size_t k = 0; k < c.boundary.size() && !near; ++k) {
-      std::vector<Curve> curves;
-      for (const ContactPiece& piece : c.boundary[k]) curves.push_back(piece.curve);
-      near = distance_to_curves(curves, p) <= epsilon;
-      if (loop_encloses(curves, p)) inside = !inside;
+    bool inside = !c.bounded;
+    for (const auto& cycle : c.boundary) {
+      for (const ContactPiece& piece : cycle) {
+        if (distance_to_curve(piece.curve, p) <= epsilon) return -1;
+        if (toggles_parity(piece.curve, p)) inside = !inside;
+      }
     }
-    if (near) return -1;
     if (inside) return c.id;
   }
   return -1;
