@@ -17,6 +17,14 @@ inline constexpr double kRelativeGeometricEpsilon = 1e-9;
 // Default accuracy the user gets when the pair file names no tolerance: 0.1% of the size.
 inline constexpr double kDefaultRelativeTolerance = 1e-3;
 
+// How far a computed criticality may lie from the contact curves it involves, relative to
+// the geometric epsilon (dimensionless). Closed-form roots are accurate to round-off at
+// simple roots, but a near-double root (a grazing contact) keeps only about half the digits
+// before polishing, and the point built from it (a radical centre, a foot of perpendicular)
+// amplifies that again; a thousand geometric epsilons still sits far below any designed
+// length.
+inline constexpr double kCriticalityPerGeometric = 1e3;
+
 struct Tolerances {
   // Length unit of the pair file (mm, in, ...). Base value everything scales with.
   double size = 1.0;
@@ -29,6 +37,14 @@ struct Tolerances {
   // Angles closer than this are equal (radians): the geometric epsilon seen at unit lever
   // arm of the pair's size, so that turning by it moves no point by more than `geometric`.
   double angular = kRelativeGeometricEpsilon;
+  // A criticality's configuration lies on a contact curve when within this distance of it,
+  // and in blocked space only when the parts overlap deeper than this (criticalities
+  // screened out of blocked space must not be lost to their own round-off).
+  double criticality = kCriticalityPerGeometric * kRelativeGeometricEpsilon;
+  // Criticalities closer than this (radians) are one critical orientation: the criticality
+  // tolerance seen at the pair's size as lever arm. Symmetric and parallel designs put
+  // several exactly at one orientation, which round-off scatters by far less than this.
+  double critical_angle = kCriticalityPerGeometric * kRelativeGeometricEpsilon;
 };
 
 // Derives every tolerance from the pair's size and the user's tolerance (if any).

@@ -3,16 +3,12 @@
 // or as a short summary on standard output. Every output is built in memory first and the
 // files are only written once everything has succeeded, so a failure leaves none behind.
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <unistd.h>  // getpid, for unique temporary names
 
 #include "cli/commands.hpp"
 #include "cslice/render_svg.hpp"
@@ -22,9 +18,6 @@
 namespace cslice::cli {
 
 namespace {
-
-// An output path that means standard output.
-constexpr const char* kStdout = "-";
 
 struct SliceOptions {
   std::string pair_path;
@@ -68,38 +61,6 @@ std::string summary_text(const Pair& pair, const Slice& slice, const std::option
   return out;
 }
 
-// Writes to a temporary file beside `path`, so a failed write never leaves a half file.
-std::string write_temp(const std::string& path, const std::string& text) {
-  const std::string temp = path + ".tmp" + std::to_string(::getpid());
-  std::ofstream out(temp, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) {
-    std::error_code ignored;
-    std::filesystem::remove(temp, ignored);
-    throw ExitError(kExitBadInput, "cannot write '" + path + "'");
-  }
-  return temp;
-}
-
-// All outputs or none: every file goes to a temporary first and is renamed into place only
-// when all of them were written.
-void write_outputs(const std::vector<std::pair<std::string, std::string>>& outputs) {
-  std::vector<std::pair<std::string, std::string>> temps;  // (temp, final)
-  try {
-    for (const auto& [path, text] : outputs) temps.emplace_back(write_temp(path, text), path);
-  } catch (...) {
-    std::error_code ignored;
-    for (const auto& t : temps) std::filesystem::remove(t.first, ignored);
-    throw;
-  }
-  for (const auto& [temp, path] : temps) {
-    std::error_code error;
-    std::filesystem::rename(temp, path, error);
-    if (error) throw ExitError(kExitBadInput, "cannot write '" + path + "': " + error.message());
-  }
-}
-
 void run_slice(const SliceOptions& options) {
   const Pair pair = load_pair_or_exit(options.pair_path);
   if (!std::isfinite(options.theta))
@@ -120,15 +81,7 @@ void run_slice(const SliceOptions& options) {
     std::cout << summary_text(pair, slice, picture.mark) << std::flush;
     return;
   }
-  // Standard output last: it cannot be taken back if a file then failed.
-  std::string to_stdout;
-  std::erase_if(outputs, [&](const auto& o) {
-    if (o.first != kStdout) return false;
-    to_stdout = o.second;
-    return true;
-  });
-  write_outputs(outputs);
-  std::cout << to_stdout << std::flush;
+  deliver_outputs(std::move(outputs));
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 #include <CLI/CLI.hpp>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cslice/pair.hpp"
 
@@ -20,6 +22,13 @@ struct ExitError : std::runtime_error {
   ExitError(int exit_code, const std::string& message)
       : std::runtime_error(message), code(exit_code) {}
 };
+
+// An output path that means standard output.
+inline constexpr const char* kStdout = "-";
+
+// Writes every (path, text) output, or none: files go to temporaries renamed into place once
+// all were written, and standard output ("-") comes last. Throws ExitError(2) on failure.
+void deliver_outputs(std::vector<std::pair<std::string, std::string>> outputs);
 
 // Loads a pair file or throws ExitError(2) with the reader's message.
 Pair load_pair_or_exit(const std::string& path);
@@ -40,5 +49,6 @@ void register_classify(CLI::App& app);
 void register_render(CLI::App& app);
 void register_equivalent(CLI::App& app);
 void register_slice(CLI::App& app);
+void register_critical(CLI::App& app);
 
 }  // namespace cslice::cli

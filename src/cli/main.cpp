@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   cslice::cli::register_render(app);
   cslice::cli::register_equivalent(app);
   cslice::cli::register_slice(app);
+  cslice::cli::register_critical(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "cslice/part.hpp"
+#include "cslice/slice.hpp"
 
 namespace cslice {
 
@@ -25,6 +25,19 @@ struct ContactFeature {
   AngleInterval normals;  // outward normals the feature can touch along
 };
 
+// One per feature of the part, in feature order (element i describes feature i).
 std::vector<ContactFeature> contact_features(const Part& part);
+
+// Whether a feature pair can touch at some orientation (local overlap filtering by
+// convexity; the normal sets decide at which orientations): reflex vertices, segment pairs,
+// concave pairs, vertex pairs and convex features too big for a concave one never touch.
+bool pair_can_touch(const ContactFeature& m, const ContactFeature& f, double eps);
+ContactKind contact_kind(const ContactFeature& m, const ContactFeature& f);
+
+// Appends the contact segments of one feature pair at theta (none when the pair cannot
+// touch there), by the rules contact_segments applies to every pair; ids continue from
+// out.size().
+void add_pair_contacts(const Pair& pair, const ContactFeature& m, const ContactFeature& f,
+                       double theta, std::vector<ContactSegment>& out);
 
 }  // namespace cslice

@@ -39,6 +39,30 @@ std::string_view to_string(ContactKind k) {
   return "?";
 }
 
+bool pair_can_touch(const ContactFeature& m, const ContactFeature& f, double eps) {
+  if (!m.can_touch || !f.can_touch) return false;
+  const bool m_seg = m.kind == FeatureKind::segment, f_seg = f.kind == FeatureKind::segment;
+  if (m_seg && f_seg) return false;
+  if (f_seg) return m.rho >= 0.0;  // a concave arc cannot rest on a straight edge
+  if (m_seg) return f.rho >= 0.0;
+  const bool m_concave = m.rho < 0.0, f_concave = f.rho < 0.0;
+  if (m_concave && f_concave) return false;
+  // Vertex/vertex contacts are endpoints of other segments.
+  if (m.kind == FeatureKind::vertex && f.kind == FeatureKind::vertex) return false;
+  return !((m_concave || f_concave) && f.rho + m.rho > eps);  // the convex one is too big
+}
+
+ContactKind contact_kind(const ContactFeature& m, const ContactFeature& f) {
+  const bool m_vertex = m.kind == FeatureKind::vertex, f_vertex = f.kind == FeatureKind::vertex;
+  if (f.kind == FeatureKind::segment)
+    return m_vertex ? ContactKind::vertex_segment : ContactKind::arc_segment;
+  if (m.kind == FeatureKind::segment)
+    return f_vertex ? ContactKind::segment_vertex : ContactKind::segment_arc;
+  if (m_vertex) return ContactKind::vertex_arc;
+  if (f_vertex) return ContactKind::arc_vertex;
+  return ContactKind::arc_arc;
+}
+
 namespace {
 
 // Angle intervals are [lo, lo + span] counterclockwise, span in [0, 2pi].
@@ -70,27 +94,17 @@ int intersect_intervals(const AngleInterval& a, const AngleInterval& b, double a
   return n;
 }
 
-ContactKind disc_pair_kind(const ContactFeature& m, const ContactFeature& f) {
-  if (m.kind == FeatureKind::vertex) return ContactKind::vertex_arc;
-  if (f.kind == FeatureKind::vertex) return ContactKind::arc_vertex;
-  return ContactKind::arc_arc;
-}
-
 class ContactBuilder {
  public:
-  ContactBuilder(const Pair& pair, double theta)
-      : pair_(pair), rot_(Pose{0.0, 0.0, theta}), theta_(theta) {}
+  ContactBuilder(const Pair& pair, double theta, std::vector<ContactSegment>& out)
+      : pair_(pair), rot_(Pose{0.0, 0.0, theta}), theta_(theta), out_(out) {}
 
   void add_pair(const ContactFeature& m, const ContactFeature& f) {
-    if (!m.can_touch || !f.can_touch) return;
-    const bool m_seg = m.kind == FeatureKind::segment, f_seg = f.kind == FeatureKind::segment;
-    if (m_seg && f_seg) return;
-    if (f_seg) return add_disc_on_segment(m, f);
-    if (m_seg) return add_segment_on_disc(m, f);
+    if (!pair_can_touch(m, f, pair_.tol.geometric)) return;
+    if (f.kind == FeatureKind::segment) return add_disc_on_segment(m, f);
+    if (m.kind == FeatureKind::segment) return add_segment_on_disc(m, f);
     add_disc_on_disc(m, f);
   }
-
-  std::vector<ContactSegment> take() { return std::move(out_); }
 
  private:
   // The moving feature's normal set, rotated and reversed: the fixed normals it can meet.
@@ -110,47 +124,36 @@ class ContactBuilder {
 
   // A moving disc feature on a fixed segment: the segment shifted by rho_m n_f - R c_m.
   void add_disc_on_segment(const ContactFeature& m, const ContactFeature& f) {
-    if (m.rho < 0.0) return;  // a concave arc cannot rest on a straight edge
     if (!interval_contains(opposed(m.normals), f.normals.lo, pair_.tol.angular)) return;
     const Vec2 shift = m.rho * unit_vector(f.normals.lo) - rot_.rotate(m.center);
-    const ContactKind kind =
-        m.kind == FeatureKind::vertex ? ContactKind::vertex_segment : ContactKind::arc_segment;
-    emit(m, f, kind, make_segment(f.edge.from + shift, f.edge.to + shift));
+    emit(m, f, contact_kind(m, f), make_segment(f.edge.from + shift, f.edge.to + shift));
   }
 
   // A moving segment on a fixed disc feature: the reversed rotated segment, placed so its
   // touching point meets the disc at the normal opposite to the segment's.
   void add_segment_on_disc(const ContactFeature& m, const ContactFeature& f) {
-    if (f.rho < 0.0) return;
     const double n_angle = m.normals.lo + theta_ + kPi;
     if (!interval_contains(f.normals, n_angle, pair_.tol.angular)) return;
     const Vec2 touch = f.center + f.rho * unit_vector(n_angle);
-    const ContactKind kind =
-        f.kind == FeatureKind::vertex ? ContactKind::segment_vertex : ContactKind::segment_arc;
-    emit(m, f, kind,
+    emit(m, f, contact_kind(m, f),
          make_segment(touch - rot_.rotate(m.edge.from), touch - rot_.rotate(m.edge.to)));
   }
 
   void add_disc_on_disc(const ContactFeature& m, const ContactFeature& f) {
-    const bool m_concave = m.rho < 0.0, f_concave = f.rho < 0.0;
-    if (m_concave && f_concave) return;
     const double rho = f.rho + m.rho;
     const double eps = pair_.tol.geometric;
-    const bool both_vertices = m.kind == FeatureKind::vertex && f.kind == FeatureKind::vertex;
-    if (both_vertices) return;  // vertex/vertex contacts are endpoints of other segments
-    if ((m_concave || f_concave) && rho > eps) return;  // the convex one is too big to fit
     std::array<AngleInterval, 2> parts;
     const int n = intersect_intervals(f.normals, opposed(m.normals), pair_.tol.angular, parts);
     const Vec2 c = f.center - rot_.rotate(m.center);
     for (int i = 0; i < n; ++i) {
       if (parts[i].span <= pair_.tol.angular) continue;  // a single touching direction
       if (std::fabs(rho) <= eps) {
-        emit(m, f, disc_pair_kind(m, f), make_segment(c, c), true);  // a perfect fit
+        emit(m, f, contact_kind(m, f), make_segment(c, c), true);  // a perfect fit
       } else if (rho > 0.0) {
-        emit(m, f, disc_pair_kind(m, f), make_arc(c, rho, parts[i].lo, parts[i].span));
+        emit(m, f, contact_kind(m, f), make_arc(c, rho, parts[i].lo, parts[i].span));
       } else {
         // c + rho n = c + |rho| n(phi + pi); traverse clockwise to keep blocked on the left.
-        emit(m, f, disc_pair_kind(m, f),
+        emit(m, f, contact_kind(m, f),
              make_arc(c, -rho, parts[i].lo + parts[i].span + kPi, -parts[i].span));
       }
     }
@@ -159,7 +162,7 @@ class ContactBuilder {
   const Pair& pair_;
   Transform rot_;
   double theta_;
-  std::vector<ContactSegment> out_;
+  std::vector<ContactSegment>& out_;
 };
 
 // Fixed features bucketed by the directions of their outward normals, so that each moving
@@ -215,7 +218,8 @@ class NormalIndex {
 std::vector<ContactSegment> contact_segments(const Pair& pair, double theta) {
   const std::vector<ContactFeature> moving = contact_features(pair.moving);
   const std::vector<ContactFeature> fixed = contact_features(pair.fixed);
-  ContactBuilder builder(pair, theta);
+  std::vector<ContactSegment> out;
+  ContactBuilder builder(pair, theta, out);
   NormalIndex index(fixed, pair.tol.angular);
   // Candidates arrive in bucket order; sorting each moving feature's list keeps the output
   // (segment ids) in the fixed order of the features, whatever the bucketing.
@@ -229,7 +233,12 @@ std::vector<ContactSegment> contact_segments(const Pair& pair, double theta) {
     std::sort(candidates.begin(), candidates.end());
     for (int i : candidates) builder.add_pair(m, fixed[i]);
   }
-  return builder.take();
+  return out;
+}
+
+void add_pair_contacts(const Pair& pair, const ContactFeature& m, const ContactFeature& f,
+                       double theta, std::vector<ContactSegment>& out) {
+  ContactBuilder(pair, theta, out).add_pair(m, f);
 }
 
 }  // namespace cslice

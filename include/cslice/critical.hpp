@@ -1,0 +1,74 @@
+// Critical orientations (paper sections 5, 6.1, 6.2, 6.5 and 9): every orientation where
+// the contact graph of the slice can change, solved in closed form for line segments and
+// circular arcs. Between two consecutive critical orientations all slices are equivalent.
+// The equations are derived in docs/criticals.md.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cslice/slice.hpp"
+
+namespace cslice {
+
+enum class CriticalCondition {
+  segment_end,  // condition 2: a contact segment appears, vanishes, or its end passes from
+                // one feature's end to the other's
+  endpoint,     // condition 3: an end of one contact segment lies on another
+  tangent,      // condition 3: two contact segments touch tangentially
+  triple,       // condition 3: three contact segments pass through one point
+};
+std::string_view to_string(CriticalCondition c);
+inline constexpr int kCriticalConditionCount = 4;
+
+// A feature pair, as it labels contact segments.
+struct FeaturePairRef {
+  int moving_feature = 0;
+  int fixed_feature = 0;
+  ContactKind kind = ContactKind::vertex_segment;
+};
+
+// One solution of one criticality equation.
+struct Criticality {
+  double theta = 0.0;
+  CriticalCondition condition = CriticalCondition::segment_end;
+  std::vector<FeaturePairRef> pairs;  // 1 (segment_end), 2 (endpoint, tangent) or 3 (triple)
+  Vec2 at;                            // a configuration (x, y) where it happens, at theta
+};
+
+// Criticalities closer together than the angular tolerance, taken as one orientation.
+struct CriticalOrientation {
+  double theta = 0.0;  // the middle of the group
+  std::vector<Criticality> criticalities;
+};
+
+struct CriticalOptions {
+  // Drop criticalities that happen only in blocked space (the moving part overlapping the
+  // fixed one deeper than the criticality tolerance), where a slice's realizable contact
+  // cannot change. Off, every solution that survives local overlap filtering is kept.
+  bool screen_blocked = true;
+};
+
+struct CriticalStats {
+  int families = 0;             // feature pairs that touch at some orientation
+  long long equations = 0;      // criticality equations solved
+  long long roots = 0;          // their roots in range
+  long long off_segment = 0;    // roots whose point lies off the contact segments
+  long long blocked = 0;        // dropped by screening
+  long long criticalities = 0;  // kept
+};
+
+struct CriticalSet {
+  std::vector<CriticalOrientation> orientations;  // sorted by theta, in [-pi, pi)
+  int counts[kCriticalConditionCount] = {};       // kept criticalities by condition
+  CriticalStats stats;
+};
+
+CriticalSet critical_orientations(const Pair& pair, const CriticalOptions& options = {});
+
+// The set as JSON text (format "cslice-critical", version 1; docs/criticals.md), ending in a
+// newline.
+std::string critical_set_to_json(const Pair& pair, const CriticalSet& set);
+
+}  // namespace cslice

@@ -1,0 +1,168 @@
+// Contact families in closed form (the same contact equations as src/contacts/contacts.cpp,
+// with theta left free). With c the centre and rho the signed radius of a disc feature
+// (vertex: rho = 0), n the fixed outward normal at the touching point, and R = R(theta):
+//   disc m on segment f:   O = f(v) + rho_m n_f - R c_m          (n_f constant)
+//   segment m on disc f:   O = c_f + rho_f R u_m - R m(u)        (u_m: m's inward normal)
+//   disc m on disc f:      O = c_f + (rho_f + rho_m) n - R c_m,  n in N_f and in -R N_m.
+// Every defining point is P + R Q. The normal intervals decide where a family is alive: a
+// moving normal interval [lo, lo + span] faces the fixed normals [lo + theta + pi, ...].
+#include "criticals/families.hpp"
+
+#include <algorithm>
+
+namespace cslice {
+
+Vec2 MovingPoint::at(double theta) const {
+  return p + Transform(Pose{0.0, 0.0, theta}).rotate(q);
+}
+
+namespace {
+
+bool is_full(const AngleInterval& a) {
+  return a.span >= kTwoPi;
+}
+
+ContactFamily disc_on_segment(const ContactFeature& m, const ContactFeature& f) {
+  ContactFamily fam;
+  fam.shape = FamilyShape::fixed_line;
+  const double n_f = f.normals.lo;
+  const Vec2 shift = m.rho * unit_vector(n_f);
+  fam.ends = {{f.edge.from + shift, -m.center}, {f.edge.to + shift, -m.center}};
+  fam.alive = {n_f - kPi - m.normals.lo - m.normals.span, m.normals.span};
+  return fam;
+}
+
+ContactFamily segment_on_disc(const ContactFeature& m, const ContactFeature& f) {
+  ContactFamily fam;
+  fam.shape = FamilyShape::turning_line;
+  const Vec2 u = f.rho * unit_vector(m.normals.lo + kPi);
+  fam.ends = {{f.center, u - m.edge.from}, {f.center, u - m.edge.to}};
+  fam.alive = {f.normals.lo - m.normals.lo - kPi, f.normals.span};
+  return fam;
+}
+
+ContactFamily disc_on_disc(const ContactFeature& m, const ContactFeature& f, double eps) {
+  ContactFamily fam;
+  fam.shape = FamilyShape::circle;
+  const double rho = f.rho + m.rho;
+  fam.radius = std::fabs(rho) <= eps ? 0.0 : std::fabs(rho);
+  fam.center = {f.center, -m.center};
+  fam.alive = {f.normals.lo - m.normals.span - m.normals.lo - kPi, f.normals.span + m.normals.span};
+  if (fam.radius == 0.0) {
+    fam.ends = {fam.center};
+    return fam;
+  }
+  std::vector<double> fixed_ends, moving_ends;
+  if (!is_full(f.normals)) fixed_ends = {f.normals.lo, f.normals.lo + f.normals.span};
+  if (!is_full(m.normals)) moving_ends = {m.normals.lo, m.normals.lo + m.normals.span};
+  for (double e : fixed_ends) fam.ends.push_back({f.center + rho * unit_vector(e), -m.center});
+  for (double e : moving_ends)
+    fam.ends.push_back({f.center, rho * unit_vector(e + kPi) - m.center});
+  for (double ef : fixed_ends)
+    for (double em : moving_ends) fam.switches.push_back(wrap_angle(ef - em - kPi));
+  return fam;
+}
+
+}  // namespace
+
+std::vector<ContactFamily> contact_families(const Pair& pair) {
+  const std::vector<ContactFeature> moving = contact_features(pair.moving);
+  const std::vector<ContactFeature> fixed = contact_features(pair.fixed);
+  const double eps = pair.tol.geometric;
+  std::vector<ContactFamily> out;
+  for (const ContactFeature& m : moving) {
+    for (const ContactFeature& f : fixed) {
+      if (!pair_can_touch(m, f, eps)) continue;
+      ContactFamily fam = f.kind == FeatureKind::segment   ? disc_on_segment(m, f)
+                          : m.kind == FeatureKind::segment ? segment_on_disc(m, f)
+                                                           : disc_on_disc(m, f, eps);
+      fam.moving = m.feature;
+      fam.fixed = f.feature;
+      fam.kind = contact_kind(m, f);
+      if (!fam.always_alive()) {
+        fam.alive.lo = wrap_angle(fam.alive.lo);
+        fam.switches.push_back(fam.alive.lo);
+        fam.switches.push_back(wrap_angle(fam.alive.lo + fam.alive.span));
+      }
+      std::sort(fam.switches.begin(), fam.switches.end());
+      fam.switches.erase(std::unique(fam.switches.begin(), fam.switches.end()), fam.switches.end());
+      out.push_back(std::move(fam));
+    }
+  }
+  return out;
+}
+
+bool alive_at(const ContactFamily& family, double theta, double slack) {
+  if (family.always_alive()) return true;
+  double d = std::fmod(theta - family.alive.lo, kTwoPi);
+  if (d < 0.0) d += kTwoPi;
+  return d <= family.alive.span + slack || d >= kTwoPi - slack;
+}
+
+namespace {
+
+// Whether [lo, hi] meets the family's alive interval (both taken around the circle).
+bool alive_within(const ContactFamily& family, double lo, double hi) {
+  if (family.always_alive()) return true;
+  double d = std::fmod(family.alive.lo - lo, kTwoPi);
+  if (d < 0.0) d += kTwoPi;
+  // The alive interval starts d after lo: inside [lo, hi], or began before lo and lasts.
+  return d <= hi - lo || d + family.alive.span >= kTwoPi;
+}
+
+// Box of P + R(theta) Q for theta in [lo, hi]: the arc's ends and its axis extremes.
+void add_swept(Box& box, const MovingPoint& m, double lo, double hi) {
+  box.add(m.at(lo));
+  box.add(m.at(hi));
+  const double r = length(m.q);
+  if (r == 0.0) return;
+  const double start = std::atan2(m.q.y, m.q.x) + lo, end = start + (hi - lo);
+  const double quarter = 0.5 * kPi;
+  for (double a = std::ceil(start / quarter) * quarter; a <= end; a += quarter)
+    box.add(m.p + r * unit_vector(a));
+}
+
+}  // namespace
+
+Box family_box(const ContactFamily& family, double lo, double hi) {
+  Box box;
+  if (!alive_within(family, lo, hi)) return box;
+  if (family.shape == FamilyShape::circle) {
+    add_swept(box, family.center, lo, hi);
+    return box.inflated(family.radius);
+  }
+  for (const MovingPoint& e : family.ends) add_swept(box, e, lo, hi);
+  return box;
+}
+
+FamilyEquation family_equation(const ContactFamily& family) {
+  FamilyEquation e;
+  if (family.shape == FamilyShape::circle) {
+    e.circle = true;
+    e.point = rotating_point(family.center.p, family.center.q);
+    e.radius = family.radius;
+    e.a = Trig::constant(-2.0) * e.point;
+    e.b = dot(e.point, e.point) - Trig::constant(family.radius * family.radius);
+    return e;
+  }
+  const MovingPoint& from = family.ends[0];
+  const MovingPoint& to = family.ends[1];
+  e.point = rotating_point(from.p, from.q);
+  if (family.shape == FamilyShape::fixed_line)
+    e.normal = constant_vec(normalized(perp_left(to.p - from.p)));
+  else
+    e.normal = rotating_point({0.0, 0.0}, normalized(perp_left(to.q - from.q)));
+  e.a = e.normal;
+  e.b = -dot(e.normal, e.point);
+  return e;
+}
+
+Trig evaluate_equation(const FamilyEquation& e, const TrigVec& x) {
+  if (e.circle) {
+    const TrigVec d = x - e.point;
+    return dot(d, d) - Trig::constant(e.radius * e.radius);
+  }
+  return dot(e.normal, x - e.point);
+}
+
+}  // namespace cslice

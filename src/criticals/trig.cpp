@@ -1,0 +1,376 @@
+#include "criticals/trig.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <complex>
+
+namespace cslice {
+
+Trig Trig::constant(double v) {
+  Trig t;
+  t.a[0] = v;
+  return t;
+}
+
+Trig Trig::harmonic(double c, double s) {
+  Trig t;
+  t.a[1] = c;
+  t.b[1] = s;
+  return t;
+}
+
+int Trig::degree() const {
+  for (int j = kMaxDegree; j > 0; --j)
+    if (a[j] != 0.0 || b[j] != 0.0) return j;
+  return 0;
+}
+
+double Trig::norm() const {
+  double n = 0.0;
+  for (int j = 0; j <= kMaxDegree; ++j) n = std::max({n, std::fabs(a[j]), std::fabs(b[j])});
+  return n;
+}
+
+double Trig::operator()(double theta) const {
+  // Harmonics by the rotation recurrence: one sin/cos pair per evaluation.
+  const double c1 = std::cos(theta), s1 = std::sin(theta);
+  double c = 1.0, s = 0.0, v = a[0];
+  const int n = degree();
+  for (int j = 1; j <= n; ++j) {
+    const double cn = c * c1 - s * s1;
+    s = s * c1 + c * s1;
+    c = cn;
+    v += a[j] * c + b[j] * s;
+  }
+  return v;
+}
+
+Trig Trig::derivative() const {
+  Trig d;
+  for (int j = 1; j <= kMaxDegree; ++j) {
+    d.a[j] = j * b[j];
+    d.b[j] = -j * a[j];
+  }
+  return d;
+}
+
+Trig Trig::half_turned() const {
+  Trig t = *this;
+  for (int j = 1; j <= kMaxDegree; j += 2) {
+    t.a[j] = -t.a[j];
+    t.b[j] = -t.b[j];
+  }
+  return t;
+}
+
+Trig operator+(const Trig& f, const Trig& g) {
+  Trig r;
+  for (int j = 0; j <= Trig::kMaxDegree; ++j) {
+    r.a[j] = f.a[j] + g.a[j];
+    r.b[j] = f.b[j] + g.b[j];
+  }
+  return r;
+}
+
+Trig operator-(const Trig& f) {
+  return -1.0 * f;
+}
+
+Trig operator-(const Trig& f, const Trig& g) {
+  return f + (-g);
+}
+
+Trig operator*(double s, const Trig& f) {
+  Trig r;
+  for (int j = 0; j <= Trig::kMaxDegree; ++j) {
+    r.a[j] = s * f.a[j];
+    r.b[j] = s * f.b[j];
+  }
+  return r;
+}
+
+// Product to sum, with complex harmonics: f = sum_j Re(F_j e^{ij.theta}) where
+// F_0 = a0 and F_j = a_j - i b_j, and Re(u) Re(v) = (Re(u v) + Re(u conj(v))) / 2.
+Trig operator*(const Trig& f, const Trig& g) {
+  const int nf = f.degree(), ng = g.degree();
+  assert(nf + ng <= Trig::kMaxDegree);
+  using C = std::complex<double>;
+  std::array<C, Trig::kMaxDegree + 1> acc{};
+  for (int j = 0; j <= nf; ++j) {
+    const C u(f.a[j], -f.b[j]);
+    for (int k = 0; k <= ng; ++k) {
+      const C v(g.a[k], -g.b[k]);
+      acc[j + k] += 0.5 * u * v;
+      const int d = j - k;
+      // Re(u e^{ij} conj(v e^{ik})) = Re(u conj(v) e^{i(j-k)}); a negative frequency is the
+      // conjugate at the positive one.
+      if (d >= 0)
+        acc[d] += 0.5 * u * std::conj(v);
+      else
+        acc[-d] += 0.5 * std::conj(u * std::conj(v));
+    }
+  }
+  Trig r;
+  r.a[0] = acc[0].real();  // a zero frequency has no sine part
+  for (int j = 1; j <= Trig::kMaxDegree; ++j) {
+    r.a[j] = acc[j].real();
+    r.b[j] = -acc[j].imag();
+  }
+  return r;
+}
+
+TrigVec rotating_point(Vec2 p, Vec2 q) {
+  TrigVec v;
+  v.x = Trig::constant(p.x) + Trig::harmonic(q.x, -q.y);
+  v.y = Trig::constant(p.y) + Trig::harmonic(q.y, q.x);
+  return v;
+}
+
+TrigVec constant_vec(Vec2 v) {
+  return {Trig::constant(v.x), Trig::constant(v.y)};
+}
+
+TrigVec operator+(const TrigVec& u, const TrigVec& v) {
+  return {u.x + v.x, u.y + v.y};
+}
+TrigVec operator-(const TrigVec& u, const TrigVec& v) {
+  return {u.x - v.x, u.y - v.y};
+}
+TrigVec operator*(const Trig& s, const TrigVec& v) {
+  return {s * v.x, s * v.y};
+}
+Trig dot(const TrigVec& u, const TrigVec& v) {
+  return u.x * v.x + u.y * v.y;
+}
+Trig cross(const TrigVec& u, const TrigVec& v) {
+  return u.x * v.y - u.y * v.x;
+}
+Vec2 evaluate(const TrigVec& v, double theta) {
+  return {v.x(theta), v.y(theta)};
+}
+
+namespace {
+
+// ---- Real polynomials in t = tan(theta / 2) ---------------------------------------------
+
+using Poly = std::vector<double>;  // coefficients, lowest degree first
+
+double eval(const Poly& p, double t) {
+  double v = 0.0;
+  for (size_t i = p.size(); i-- > 0;) v = v * t + p[i];
+  return v;
+}
+
+Poly derivative(const Poly& p) {
+  Poly d;
+  for (size_t i = 1; i < p.size(); ++i) d.push_back(double(i) * p[i]);
+  return d;
+}
+
+void trim(Poly& p) {
+  while (!p.empty() && p.back() == 0.0) p.pop_back();
+}
+
+// (1 + t^2)^n F(2 atan t): with e^{i.theta} = (1 + it)^2 / (1 + t^2), each harmonic
+// Re(F_j e^{ij.theta}) becomes Re(F_j (1 + it)^{2j}) (1 + t^2)^{n - j}.
+Poly to_half_angle(const Trig& f) {
+  const int n = f.degree();
+  using C = std::complex<double>;
+  std::vector<std::vector<C>> one_plus_it(2 * n + 1);  // powers of (1 + it)
+  one_plus_it[0] = {C(1.0)};
+  for (int k = 1; k <= 2 * n; ++k) {
+    const auto& prev = one_plus_it[k - 1];
+    std::vector<C> next(prev.size() + 1);
+    for (size_t i = 0; i < prev.size(); ++i) {
+      next[i] += prev[i];
+      next[i + 1] += C(0.0, 1.0) * prev[i];
+    }
+    one_plus_it[k] = next;
+  }
+  std::vector<Poly> one_plus_t2(n + 1);  // powers of (1 + t^2)
+  one_plus_t2[0] = {1.0};
+  for (int k = 1; k <= n; ++k) {
+    Poly next(2 * k + 1, 0.0);
+    for (size_t i = 0; i < one_plus_t2[k - 1].size(); ++i) {
+      next[i] += one_plus_t2[k - 1][i];
+      next[i + 2] += one_plus_t2[k - 1][i];
+    }
+    one_plus_t2[k] = next;
+  }
+  Poly p(2 * n + 1, 0.0);
+  for (int j = 0; j <= n; ++j) {
+    const C fj(f.a[j], -f.b[j]);
+    const auto& w = one_plus_it[2 * j];
+    const Poly& s = one_plus_t2[n - j];
+    for (size_t i = 0; i < w.size(); ++i) {
+      const double c = (fj * w[i]).real();
+      if (c == 0.0) continue;
+      for (size_t k = 0; k < s.size(); ++k) p[i + k] += c * s[k];
+    }
+  }
+  trim(p);
+  return p;
+}
+
+// A root of p in [lo, hi] where p(lo), p(hi) have opposite signs: Newton steps kept inside
+// the shrinking bracket, bisection when a step leaves it.
+double refine_bracketed(const Poly& p, const Poly& dp, double lo, double hi) {
+  double flo = eval(p, lo);
+  double t = 0.5 * (lo + hi);
+  for (int it = 0; it < 100; ++it) {
+    const double ft = eval(p, t);
+    if (ft == 0.0) return t;
+    if ((ft < 0.0) == (flo < 0.0)) {
+      lo = t;
+      flo = ft;
+    } else {
+      hi = t;
+    }
+    const double d = eval(dp, t);
+    double next = d != 0.0 ? t - ft / d : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (next == t || hi - lo <= 4.0 * std::numeric_limits<double>::epsilon()) return next;
+    t = next;
+  }
+  return t;
+}
+
+double evaluation_bound(const Poly& p, double t) {
+  double v = 0.0;
+  for (size_t i = p.size(); i-- > 0;) v = v * std::fabs(t) + std::fabs(p[i]);
+  return v;
+}
+
+// Real roots of p in [lo, hi]: the roots of p' split the interval into pieces where p is
+// monotone, each holding at most one root; an extremum where p nearly vanishes is a double
+// root that no sign change reveals. `touch` is relative to the evaluation bound.
+void real_roots(const Poly& p, double lo, double hi, double touch, std::vector<double>& out,
+                std::vector<double>* double_roots) {
+  if (p.size() <= 1) return;
+  if (p.size() == 2) {
+    const double t = -p[0] / p[1];
+    if (t >= lo && t <= hi) out.push_back(t);
+    return;
+  }
+  const Poly dp = derivative(p);
+  std::vector<double> turns;
+  real_roots(dp, lo, hi, touch, turns, nullptr);
+  std::sort(turns.begin(), turns.end());
+  double x0 = lo, f0 = eval(p, lo);
+  if (f0 == 0.0) out.push_back(lo);
+  turns.push_back(hi);
+  for (size_t i = 0; i < turns.size(); ++i) {
+    const double x1 = turns[i], f1 = eval(p, x1);
+    if (f1 == 0.0) {
+      out.push_back(x1);
+    } else if (f0 != 0.0 && (f0 < 0.0) != (f1 < 0.0)) {
+      out.push_back(refine_bracketed(p, dp, x0, x1));
+    } else if (double_roots && i + 1 < turns.size() &&
+               std::fabs(f1) <= touch * evaluation_bound(p, x1)) {
+      double_roots->push_back(x1);
+    }
+    x0 = x1;
+    f0 = f1;
+  }
+}
+
+// A harmonic this small relative to the largest coefficient is round-off left by a
+// cancellation (a few units in the last place of the terms that cancelled).
+constexpr double kCancelledHarmonic = 64.0 * std::numeric_limits<double>::epsilon();
+
+// A polishing step longer than this (radians) means Newton has left the root it started at
+// (the root found in t is far more accurate than that); the unpolished value is kept.
+constexpr double kMaxPolishStep = 1e-3;
+
+// Newton on f' from a near-double root: the extremum itself, which f' crosses simply.
+double polish_extremum(const Trig& f, double theta) {
+  const Trig d1 = f.derivative(), d2 = d1.derivative();
+  for (int it = 0; it < 8; ++it) {
+    const double s = d2(theta);
+    if (s == 0.0) break;
+    const double step = d1(theta) / s;
+    if (!std::isfinite(step) || std::fabs(step) > kMaxPolishStep) break;
+    theta -= step;
+    if (std::fabs(step) <= std::numeric_limits<double>::epsilon()) break;
+  }
+  return theta;
+}
+
+// Newton on f from a simple root found in t; stops when a step stops shrinking.
+double polish_root(const Trig& f, double theta) {
+  const Trig d1 = f.derivative();
+  double last = std::numeric_limits<double>::infinity();
+  for (int it = 0; it < 6; ++it) {
+    const double s = d1(theta);
+    if (s == 0.0) break;
+    const double step = f(theta) / s;
+    if (!std::isfinite(step) || std::fabs(step) >= last || std::fabs(step) > kMaxPolishStep) break;
+    theta -= step;
+    last = std::fabs(step);
+  }
+  return theta;
+}
+
+// Amplitude of harmonic j (coefficients are far from overflow: no need for hypot).
+double harmonic_size(const Trig& f, int j) {
+  return std::sqrt(f.a[j] * f.a[j] + f.b[j] * f.b[j]);
+}
+
+// a0 + a1 cos + b1 sin = a0 + A cos(theta - phi): theta = phi +- acos(-a0 / A); a double
+// root where |a0| = A to within `touch`.
+TrigRoots first_harmonic_roots(const Trig& f, double touch, double merge_angle) {
+  TrigRoots r;
+  const double amplitude = harmonic_size(f, 1), phase = std::atan2(f.b[1], f.a[1]);
+  const double c = -f.a[0] / amplitude;
+  if (std::fabs(c) > 1.0 + touch) return r;
+  const double spread = std::acos(std::clamp(c, -1.0, 1.0));
+  r.roots = {wrap_angle(phase - spread), wrap_angle(phase + spread)};
+  std::sort(r.roots.begin(), r.roots.end());
+  if (r.roots[1] - r.roots[0] <= merge_angle || r.roots[0] + kTwoPi - r.roots[1] <= merge_angle)
+    r.roots.pop_back();
+  return r;
+}
+
+}  // namespace
+
+TrigRoots trig_roots(const Trig& raw, double zero_norm, double touch, double merge_angle) {
+  TrigRoots r;
+  const double n = raw.norm();
+  if (n <= zero_norm) {
+    r.identically_zero = true;
+    return r;
+  }
+  // Harmonics that cancelled down to round-off (cos^2 + sin^2 in |P + R Q|^2) would raise
+  // the degree for nothing.
+  Trig f = raw;
+  for (int j = 1; j <= Trig::kMaxDegree; ++j)
+    if (harmonic_size(f, j) <= kCancelledHarmonic * n) f.a[j] = f.b[j] = 0.0;
+  // No root when the constant term outweighs every harmonic together.
+  double amplitude = 0.0;
+  for (int j = 1; j <= Trig::kMaxDegree; ++j) amplitude += harmonic_size(f, j);
+  if (std::fabs(f.a[0]) > amplitude * (1.0 + touch) + touch * n) return r;
+
+  if (f.degree() == 1) return first_harmonic_roots(f, touch, merge_angle);
+  // Two charts, each |t| <= 1: theta in [-pi/2, pi/2] directly, the rest half a turn away.
+  for (int chart = 0; chart < 2; ++chart) {
+    const Trig g = chart == 0 ? f : f.half_turned();
+    const Poly p = to_half_angle(g);
+    std::vector<double> simple, twofold;
+    real_roots(p, -1.0, 1.0, touch, simple, &twofold);
+    const double shift = chart == 0 ? 0.0 : kPi;
+    for (double t : simple)
+      r.roots.push_back(wrap_angle(polish_root(f, 2.0 * std::atan(t) + shift)));
+    for (double t : twofold) {
+      const double theta = wrap_angle(polish_extremum(f, 2.0 * std::atan(t) + shift));
+      if (std::fabs(f(theta)) <= touch * n) r.roots.push_back(theta);
+    }
+  }
+  std::sort(r.roots.begin(), r.roots.end());
+  // Chart borders (theta = +-pi/2) are found twice.
+  r.roots.erase(std::unique(r.roots.begin(), r.roots.end(),
+                            [&](double x, double y) { return y - x <= merge_angle; }),
+                r.roots.end());
+  return r;
+}
+
+}  // namespace cslice

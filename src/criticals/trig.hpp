@@ -1,0 +1,69 @@
+// Trigonometric polynomials in the orientation theta, and their real roots.
+//
+// Every contact curve of a line/arc pair moves with theta through points of the form
+// P + R(theta) Q, whose coordinates are degree-1 trigonometric polynomials. Each criticality
+// condition is a polynomial expression in such coordinates, hence a trigonometric
+// polynomial F(theta) = a0 + sum_j (a_j cos j.theta + b_j sin j.theta) of small degree
+// (at most 6 for three contact circles through one point). Its roots are the candidate
+// critical orientations: docs/criticals.md derives each equation.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "cslice/geometry.hpp"
+
+namespace cslice {
+
+// A real Fourier polynomial of degree <= kMaxDegree, in Fourier form: products use the
+// product-to-sum identities, so cos^2 + sin^2 cancels exactly up to round-off.
+struct Trig {
+  static constexpr int kMaxDegree = 8;
+  std::array<double, kMaxDegree + 1> a{};  // cosine coefficients (a[0] is the constant)
+  std::array<double, kMaxDegree + 1> b{};  // sine coefficients (b[0] unused, always 0)
+
+  static Trig constant(double v);
+  // c cos(theta) + s sin(theta)
+  static Trig harmonic(double c, double s);
+
+  int degree() const;   // highest j with a nonzero coefficient (0 for constants and zero)
+  double norm() const;  // largest coefficient magnitude
+  double operator()(double theta) const;
+  Trig derivative() const;
+  // G(phi) = F(phi + shift) for shift = 0 or pi (a half turn negates the odd harmonics).
+  Trig half_turned() const;
+};
+
+Trig operator+(const Trig& f, const Trig& g);
+Trig operator-(const Trig& f, const Trig& g);
+Trig operator-(const Trig& f);
+Trig operator*(const Trig& f, const Trig& g);  // degrees must add up to <= kMaxDegree
+Trig operator*(double s, const Trig& f);
+
+// A point or vector whose coordinates are trigonometric polynomials.
+struct TrigVec {
+  Trig x, y;
+};
+// The moving point P + R(theta) Q.
+TrigVec rotating_point(Vec2 p, Vec2 q);
+TrigVec constant_vec(Vec2 v);
+TrigVec operator+(const TrigVec& u, const TrigVec& v);
+TrigVec operator-(const TrigVec& u, const TrigVec& v);
+TrigVec operator*(const Trig& s, const TrigVec& v);
+Trig dot(const TrigVec& u, const TrigVec& v);
+Trig cross(const TrigVec& u, const TrigVec& v);
+Vec2 evaluate(const TrigVec& v, double theta);
+
+// Real roots of f in [-pi, pi), sorted. A root is a sign change, polished to full
+// precision, or a local extremum where |f| <= touch * f.norm(): a double root (a grazing
+// contact) that a sign test would miss. Returns no roots when f is identically zero
+// relative to `zero_norm` (f.norm() <= zero_norm): the condition then holds for every theta
+// and marks a permanent coincidence, not a critical orientation.
+struct TrigRoots {
+  std::vector<double> roots;
+  bool identically_zero = false;
+};
+// Roots closer than merge_angle are reported once.
+TrigRoots trig_roots(const Trig& f, double zero_norm, double touch, double merge_angle);
+
+}  // namespace cslice

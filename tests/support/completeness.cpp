@@ -1,0 +1,156 @@
+#include "support/completeness.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "cslice/equivalence.hpp"
+
+namespace cslice::testkit {
+
+namespace {
+
+std::string describe(double theta, const std::string& what) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "theta %.17g: ", theta);
+  return buf + what;
+}
+
+struct Checker {
+  const Pair& pair;
+  const Pair& fine;                      // the pair with a finer geometric epsilon
+  const std::vector<double>& criticals;  // sorted, in [-pi, pi)
+  const CompletenessOptions& options;
+  CompletenessReport& report;
+
+  using Slicer = Slice (Checker::*)(double);
+
+  Slice slice(double theta) {
+    ++report.slices;
+    return compute_slice(pair, theta);
+  }
+
+  Slice fine_slice(double theta) {
+    ++report.slices;
+    return compute_slice(fine, theta);
+  }
+
+  // Whether a reported critical orientation lies in [lo, hi] (hi - lo < 2 pi, lo may be
+  // below -pi), widened by the angular tolerance.
+  bool critical_within(double lo, double hi) const {
+    const double slack = pair.tol.angular;
+    for (double c : criticals)
+      for (double shift : {-kTwoPi, 0.0, kTwoPi})
+        if (c + shift >= lo - slack && c + shift <= hi + slack) return true;
+    return false;
+  }
+
+  // Bisects [lo, hi], where the slices differ, down to the bracket width; `known` is the
+  // slice at lo (from_low) or at hi.
+  std::pair<double, double> narrow(double lo, double hi, const Slice& known, bool from_low,
+                                   Slicer make = &Checker::slice) {
+    Slice end = known;
+    while (hi - lo > options.bracket) {
+      const double mid = 0.5 * (lo + hi);
+      Slice m = (this->*make)(mid);
+      const bool same = slices_equivalent(end, m).equivalent;
+      if (same == from_low)
+        lo = mid;
+      else
+        hi = mid;
+      if (same) end = std::move(m);
+    }
+    return {lo, hi};
+  }
+
+  // Whether the change in the narrow bracket [a, b] is the slice's resolution next to a
+  // reported critical orientation c: with a finer epsilon it must leave the bracket and
+  // reappear at least halfway closer to c, or at c itself. A real change stays put.
+  bool resolution_artifact(double a, double b) {
+    if (criticals.empty() || !slices_equivalent(fine_slice(a), fine_slice(b)).equivalent)
+      return false;
+    const double m = 0.5 * (a + b);
+    double d = kPi;  // signed angle from m to the nearest critical orientation
+    for (double c : criticals)
+      if (std::fabs(wrap_angle(c - m)) < std::fabs(d)) d = wrap_angle(c - m);
+    const double margin = 2.0 * pair.tol.critical_angle;
+    if (std::fabs(d) <= 2.0 * margin) return true;
+    const double q = m + d - std::copysign(margin, d);
+    const Slice at_m = fine_slice(m);
+    if (slices_equivalent(at_m, fine_slice(q)).equivalent) return true;  // the change is at c
+    const auto [x, y] = d > 0 ? narrow(m, q, at_m, true, &Checker::fine_slice)
+                              : narrow(q, m, at_m, false, &Checker::fine_slice);
+    return std::fabs(m + d - 0.5 * (x + y)) <= 0.5 * std::fabs(d);
+  }
+
+  void check_intervals() {
+    const size_t n = criticals.size();
+    report.intervals = int(std::max<size_t>(n, 1));
+    std::vector<Slice> representatives;
+    for (size_t i = 0; i < std::max<size_t>(n, 1); ++i) {
+      const double lo = n ? criticals[i] : -kPi;
+      const double hi = n ? (i + 1 < n ? criticals[i + 1] : criticals[0] + kTwoPi) : kPi;
+      const double mid = lo + (hi - lo) * 0.5;
+      const int k = options.samples_per_interval;
+      const Slice rep = slice(mid);
+      for (int s = 0; s < k; ++s) {
+        const double theta = lo + (hi - lo) * (s + 0.5) / k;
+        const EquivalenceResult r = slices_equivalent(rep, slice(theta));
+        if (r.equivalent) continue;
+        // Where between the middle and the sample does the slice change?
+        const auto [a, b] =
+            theta < mid ? narrow(theta, mid, rep, false) : narrow(mid, theta, rep, true);
+        if (resolution_artifact(a, b))
+          ++report.near_critical;
+        else
+          report.interval_failures.push_back(
+              describe(theta, "differs from its interval's middle: " + r.difference));
+      }
+      representatives.push_back(rep);
+    }
+    for (size_t i = 0; i < n; ++i) {
+      const Slice& before = representatives[(i + n - 1) % n];
+      if (slices_equivalent(before, representatives[i]).equivalent) ++report.extraneous;
+    }
+  }
+
+  void check_dense() {
+    const int k = options.dense_samples;
+    Slice prev = slice(-kPi);
+    for (int s = 1; s <= k; ++s) {
+      const double lo = -kPi + kTwoPi * (s - 1) / k, hi = -kPi + kTwoPi * s / k;
+      Slice next = slice(hi);
+      const EquivalenceResult r = slices_equivalent(prev, next);
+      if (!r.equivalent && !critical_within(lo, hi)) {
+        const auto [a, b] = narrow(lo, hi, prev, true);
+        if (critical_within(a, b))
+          ;  // a reported change, seen between its neighbours' samples
+        else if (resolution_artifact(a, b))
+          ++report.near_critical;
+        else
+          report.missed.push_back(describe(0.5 * (a + b),
+                                           "change with no critical orientation "
+                                           "in a bracket this wide: " +
+                                               r.difference));
+      }
+      prev = std::move(next);
+    }
+  }
+};
+
+}  // namespace
+
+CompletenessReport check_completeness(const Pair& pair, const CriticalSet& set,
+                                      const CompletenessOptions& options) {
+  CompletenessReport report;
+  std::vector<double> criticals;
+  for (const CriticalOrientation& o : set.orientations) criticals.push_back(o.theta);
+  report.orientations = int(criticals.size());
+  Pair fine = pair;
+  fine.tol.geometric /= options.epsilon_shrink;
+  Checker checker{pair, fine, criticals, options, report};
+  checker.check_intervals();
+  checker.check_dense();
+  return report;
+}
+
+}  // namespace cslice::testkit

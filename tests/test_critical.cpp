@@ -1,0 +1,300 @@
+// Critical orientations: the trigonometric root finder, analytic cases with known critical
+// sets, invariance under rotating either part, and the `cslice critical` command.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <random>
+
+#include "criticals/trig.hpp"
+#include "cslice/critical.hpp"
+#include "support/cli_run.hpp"
+#include "support/examples.hpp"
+#include "support/random_parts.hpp"
+#include "support/random_polygons.hpp"
+
+using namespace cslice;
+
+namespace {
+
+constexpr double kRootAccuracy = 1e-10;
+
+Trig random_trig(std::mt19937& rng, int degree) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Trig t;
+  for (int j = 0; j <= degree; ++j) {
+    t.a[j] = u(rng);
+    if (j > 0) t.b[j] = u(rng);
+  }
+  return t;
+}
+
+std::vector<double> thetas(const CriticalSet& set) {
+  std::vector<double> out;
+  for (const CriticalOrientation& o : set.orientations) out.push_back(o.theta);
+  return out;
+}
+
+// Angular distance on the circle.
+double circle_gap(double a, double b) {
+  return std::fabs(wrap_angle(a - b));
+}
+
+// Every value of `expected` matches one of `got` and back, each within `accuracy`.
+void expect_same_angles(const std::vector<double>& got, const std::vector<double>& expected,
+                        double accuracy) {
+  ASSERT_EQ(got.size(), expected.size());
+  for (double e : expected) {
+    double best = kPi;
+    for (double g : got) best = std::min(best, circle_gap(g, e));
+    EXPECT_LE(best, accuracy) << "expected a critical orientation at " << e;
+  }
+}
+
+Pair polygon_pair(const testkit::LoopVertices& moving, const testkit::LoopVertices& fixed) {
+  return testkit::parse_or_throw(testkit::pair_json("analytic", {moving}, {fixed}), "analytic");
+}
+
+testkit::LoopVertices regular_polygon(int n, double r, Vec2 c, double phase) {
+  testkit::LoopVertices v;
+  for (int i = 0; i < n; ++i) {
+    const Vec2 p = c + r * unit_vector(phase + kTwoPi * i / n);
+    v.push_back({p.x, p.y, 0.0});
+  }
+  return v;
+}
+
+}  // namespace
+
+// ---- Trigonometric polynomials ----------------------------------------------------------
+
+TEST(Trig, ProductsAndDerivativesAgreeWithPointwiseValues) {
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Trig f = random_trig(rng, 3), g = random_trig(rng, 4);
+    const Trig fg = f * g, df = f.derivative(), h = f.half_turned();
+    for (double theta : {-3.0, -1.1, 0.0, 0.4, 2.9}) {
+      EXPECT_NEAR(fg(theta), f(theta) * g(theta), 1e-12);
+      EXPECT_NEAR(h(theta), f(theta + kPi), 1e-12);
+      const double step = 1e-6;
+      EXPECT_NEAR(df(theta), (f(theta + step) - f(theta - step)) / (2 * step), 1e-7);
+    }
+  }
+}
+
+TEST(Trig, RotatingPointsTraceCircles) {
+  const TrigVec p = rotating_point({1.0, 2.0}, {3.0, -1.0});
+  for (double theta : {-2.0, 0.3, 1.7}) {
+    const Vec2 expected = Vec2{1.0, 2.0} + Transform(Pose{0, 0, theta}).rotate({3.0, -1.0});
+    const Vec2 got = evaluate(p, theta);
+    EXPECT_NEAR(got.x, expected.x, 1e-14);
+    EXPECT_NEAR(got.y, expected.y, 1e-14);
+  }
+}
+
+// Roots against a brute-force scan: every sign change of a fine sampling holds a reported
+// root, and every reported root is a zero.
+TEST(Trig, RootsMatchABruteForceScan) {
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 300; ++trial) {
+    const int degree = 1 + trial % 6;
+    const Trig f = random_trig(rng, degree);
+    const TrigRoots r = trig_roots(f, 1e-14, 1e-12, 1e-12);
+    ASSERT_FALSE(r.identically_zero);
+    for (double t : r.roots) {
+      EXPECT_LE(std::fabs(f(t)), 1e-9) << "trial " << trial;
+      EXPECT_GE(t, -kPi);
+      EXPECT_LT(t, kPi);
+    }
+    const int n = 20000;
+    for (int i = 0; i < n; ++i) {
+      const double a = -kPi + kTwoPi * i / n, b = -kPi + kTwoPi * (i + 1) / n;
+      if ((f(a) < 0) == (f(b) < 0)) continue;
+      bool found = false;
+      for (double t : r.roots) found |= t >= a - 1e-9 && t <= b + 1e-9;
+      for (double t : r.roots) found |= b >= kPi && t <= -kPi + 1e-9;
+      EXPECT_TRUE(found) << "trial " << trial << ": sign change in [" << a << ", " << b << "]";
+    }
+  }
+}
+
+TEST(Trig, DoubleRootsAreFoundAndPolished) {
+  // (cos theta - cos 0.7)^2 touches zero at +-0.7 without changing sign.
+  const Trig c = Trig::harmonic(1.0, 0.0) - Trig::constant(std::cos(0.7));
+  const TrigRoots r = trig_roots(c * c, 1e-14, 1e-9, 1e-12);
+  ASSERT_EQ(r.roots.size(), 2u);
+  EXPECT_NEAR(r.roots[0], -0.7, kRootAccuracy);
+  EXPECT_NEAR(r.roots[1], 0.7, kRootAccuracy);
+}
+
+TEST(Trig, RootsAtTheChartBordersAndAtMinusPiAreReportedOnce) {
+  // sin(theta) vanishes at -pi and 0; cos(theta) at +-pi/2, where the two charts meet.
+  const TrigRoots s = trig_roots(Trig::harmonic(0.0, 1.0), 1e-14, 1e-12, 1e-12);
+  ASSERT_EQ(s.roots.size(), 2u);
+  EXPECT_NEAR(s.roots[0], -kPi, kRootAccuracy);
+  EXPECT_NEAR(s.roots[1], 0.0, kRootAccuracy);
+  const TrigRoots c = trig_roots(Trig::harmonic(1.0, 0.0), 1e-14, 1e-12, 1e-12);
+  ASSERT_EQ(c.roots.size(), 2u);
+  EXPECT_NEAR(c.roots[0], -kPi / 2, kRootAccuracy);
+  EXPECT_NEAR(c.roots[1], kPi / 2, kRootAccuracy);
+}
+
+TEST(Trig, AnIdenticallyZeroConditionHasNoRoots) {
+  // cos^2 + sin^2 - 1 cancels to round-off.
+  const Trig c = Trig::harmonic(1.0, 0.0), s = Trig::harmonic(0.0, 1.0);
+  const TrigRoots r = trig_roots(c * c + s * s - Trig::constant(1.0), 1e-12, 1e-12, 1e-12);
+  EXPECT_TRUE(r.identically_zero);
+  EXPECT_TRUE(r.roots.empty());
+}
+
+// ---- Analytic cases -----------------------------------------------------------------
+
+// Two convex polygons: the free space is the outside of their Minkowski sum, whose edges
+// follow the edge normals in angular order; it changes only where a rotated moving normal
+// opposes a fixed one: theta = n_f - n_m - pi for every pair of edges.
+TEST(CriticalAnalytic, ConvexPolygonsChangeOnlyWhereEdgeNormalsOppose) {
+  const testkit::LoopVertices moving = regular_polygon(3, 1.0, {0.2, -0.1}, 0.3);
+  const testkit::LoopVertices fixed = regular_polygon(5, 2.0, {0.0, 0.0}, 0.05);
+  const Pair pair = polygon_pair(moving, fixed);
+  std::vector<double> expected;
+  auto normals = [](const testkit::LoopVertices& v) {
+    std::vector<double> out;
+    for (size_t i = 0; i < v.size(); ++i) {
+      const auto& a = v[i];
+      const auto& b = v[(i + 1) % v.size()];
+      out.push_back(std::atan2(-(b.x - a.x), b.y - a.y));  // right of a counterclockwise edge
+    }
+    return out;
+  };
+  for (double nm : normals(moving))
+    for (double nf : normals(fixed)) expected.push_back(wrap_angle(nf - nm - kPi));
+  const CriticalSet set = critical_orientations(pair);
+  expect_same_angles(thetas(set), expected, 1e-9);
+  EXPECT_EQ(set.counts[int(CriticalCondition::tangent)], 0);
+}
+
+TEST(CriticalAnalytic, ASquarePegInASquareHoleChangesAtQuarterTurns) {
+  const CriticalSet set = critical_orientations(testkit::load_example("square-peg-hole"));
+  expect_same_angles(thetas(set), {-kPi, -kPi / 2, 0.0, kPi / 2}, 1e-12);
+}
+
+// A disc turning about any point of itself only translates its contact segments.
+TEST(CriticalAnalytic, DiscsHaveNoCriticalOrientations) {
+  for (const char* name : {"disc-in-box", "disc-half-plane", "pin-exact-fit"})
+    EXPECT_TRUE(critical_orientations(testkit::load_example(name)).orientations.empty()) << name;
+  const std::string eccentric = R"({"name": "eccentric",
+    "moving": {"loops": [{"circle": [0.8, 0.3, 0.5]}]},
+    "fixed": {"loops": [[[-3, -2], [4, -2], [2, 1], [-1, 3, 0.4]]]}})";
+  const LoadResult r = parse_pair(eccentric, "eccentric");
+  ASSERT_TRUE(r.ok()) << r.error->message();
+  EXPECT_TRUE(critical_orientations(*r.pair).orientations.empty());
+}
+
+// Screening drops only criticalities in blocked space: everything it keeps, the unscreened
+// run finds too.
+TEST(CriticalAnalytic, ScreeningOnlyRemoves) {
+  for (const char* name : {"knee", "cam", "fixture", "fastener"}) {
+    const Pair pair = testkit::load_example(name);
+    CriticalOptions all;
+    all.screen_blocked = false;
+    const CriticalSet screened = critical_orientations(pair),
+                      unscreened = critical_orientations(pair, all);
+    EXPECT_LE(screened.stats.criticalities, unscreened.stats.criticalities) << name;
+    EXPECT_EQ(unscreened.stats.blocked, 0) << name;
+    for (double t : thetas(screened)) {
+      double best = kPi;
+      for (double u : thetas(unscreened)) best = std::min(best, circle_gap(t, u));
+      EXPECT_LE(best, pair.tol.critical_angle) << name << " at " << t;
+    }
+  }
+}
+
+// Turning the fixed part by alpha turns every slice, so the critical orientations shift by
+// alpha; turning the moving part's body frame by beta shifts them by -beta.
+TEST(CriticalInvariance, TurningEitherPartShiftsTheCriticalOrientations) {
+  std::mt19937 rng(5);
+  for (int trial = 0; trial < 6; ++trial) {
+    const Pair pair = testkit::random_pair(rng, 5, 6, trial % 2 == 0).pair;
+    const double alpha = 0.37 + trial, beta = -1.1 + 0.5 * trial;
+    Pair turned_fixed = pair, turned_moving = pair;
+    turned_fixed.fixed = placed(pair.fixed, {0.0, 0.0, alpha});
+    turned_moving.moving = placed(pair.moving, {0.0, 0.0, beta});
+    const std::vector<double> base = thetas(critical_orientations(pair));
+    std::vector<double> shifted_fixed, shifted_moving;
+    for (double t : base) {
+      shifted_fixed.push_back(wrap_angle(t + alpha));
+      shifted_moving.push_back(wrap_angle(t - beta));
+    }
+    // Round-off moves a group's middle by up to the grouping angle.
+    const double accuracy = pair.tol.critical_angle;
+    expect_same_angles(thetas(critical_orientations(turned_fixed)), shifted_fixed, accuracy);
+    expect_same_angles(thetas(critical_orientations(turned_moving)), shifted_moving, accuracy);
+  }
+}
+
+TEST(CriticalExamples, CountsAreInThePapersRange) {
+  // The paper's Figure 8: 125, 64, 155 and 118 criticalities. Ours count critical
+  // orientations after grouping and screening; they must stay the same order of magnitude
+  // (docs/performance.md lists both).
+  for (const char* name : {"knee", "cam", "fixture", "fastener"}) {
+    const CriticalSet set = critical_orientations(testkit::load_example(name));
+    EXPECT_GE(set.orientations.size(), 4u) << name;
+    EXPECT_LE(set.orientations.size(), 400u) << name;
+    int total = 0;
+    for (int c : set.counts) total += c;
+    EXPECT_EQ(total, set.stats.criticalities) << name;
+    for (size_t i = 1; i < set.orientations.size(); ++i)
+      EXPECT_GT(set.orientations[i].theta - set.orientations[i - 1].theta,
+                testkit::load_example(name).tol.critical_angle);
+  }
+}
+
+// ---- The command ----------------------------------------------------------------------
+
+class CriticalCli : public testkit::ScratchDirTest {
+ protected:
+  CriticalCli() : ScratchDirTest("cslice_critical") {}
+};
+
+TEST_F(CriticalCli, WritesSortedJsonWithCounts) {
+  const std::string out = (dir_ / "cam.json").string();
+  const testkit::RunResult r =
+      testkit::run_cli("critical " + testkit::quoted(testkit::example_path("cam")) + " --json " +
+                           testkit::quoted(out),
+                       dir_);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(testkit::read_file(out));
+  ASSERT_TRUE(j.contains("critical"));
+  ASSERT_TRUE(j.contains("counts"));
+  double last = -kPi - 1.0;
+  int total = 0;
+  for (const auto& c : j["critical"]) {
+    EXPECT_GT(c["theta"].get<double>(), last);
+    last = c["theta"].get<double>();
+    EXPECT_TRUE(c.contains("condition"));
+    EXPECT_FALSE(c["features"].empty());
+    total += int(c["criticalities"].size());
+  }
+  EXPECT_EQ(j["counts"]["criticalities"].get<int>(), total);
+  EXPECT_EQ(j["counts"]["orientations"].get<size_t>(), j["critical"].size());
+}
+
+TEST_F(CriticalCli, PrintsATableWithASummary) {
+  const testkit::RunResult r = testkit::run_cli(
+      "critical " + testkit::quoted(testkit::example_path("square-peg-hole")), dir_);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("critical orientations 4"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("segment_end"), std::string::npos);
+}
+
+TEST_F(CriticalCli, BadInputExitsTwoWithNoOutput) {
+  testkit::write_file(dir_ / "bad.json", "{\"name\": 3");
+  const std::string out = (dir_ / "out.json").string();
+  const testkit::RunResult r =
+      testkit::run_cli("critical " + testkit::quoted((dir_ / "bad.json").string()) + " --json " +
+                           testkit::quoted(out),
+                       dir_);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(r.out.empty());
+  EXPECT_NE(r.err.find("bad.json"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
