@@ -23,5 +23,7 @@ for pair in examples/*.json; do
   "$cslice" info "$pair"
   "$cslice" render "$pair" --at "$at" -o "out/$name.svg"
   "$cslice" slice "$pair" --theta "$theta" --json "out/$name-slice.json" --svg "out/$name-slice.svg"
-  echo "   pictures: out/$name.svg, out/$name-slice.svg; slice data: out/$name-slice.json"
+  "$cslice" critical "$pair" --json "out/$name-critical.json"
+  "$cslice" critical "$pair" | tail -8
+  echo "   pictures: out/$name.svg, out/$name-slice.svg; data: out/$name-slice.json, out/$name-critical.json"
 done

@@ -37,7 +37,8 @@ struct Criticality {
   Vec2 at;                            // a configuration (x, y) where it happens, at theta
 };
 
-// Criticalities closer together than the angular tolerance, taken as one orientation.
+// Criticalities closer together than the critical angle (Tolerances::critical_angle), taken
+// as one orientation.
 struct CriticalOrientation {
   double theta = 0.0;  // the middle of the group
   std::vector<Criticality> criticalities;
@@ -54,7 +55,8 @@ struct CriticalStats {
   int families = 0;             // feature pairs that touch at some orientation
   long long equations = 0;      // criticality equations solved
   long long roots = 0;          // their roots in range
-  long long off_segment = 0;    // roots whose point lies off the contact segments
+  long long off_segment = 0;    // roots rejected: a family not alive there, the point off
+                                // its contact segments, or a triple at a segment's end
   long long blocked = 0;        // dropped by screening
   long long criticalities = 0;  // kept
 };

@@ -1,5 +1,5 @@
-// `cslice critical PAIR.json [--json OUT] [--all]`: the critical orientations of a pair, as a
-// table with a summary of counts by condition, or as JSON (docs/criticals.md).
+// `cslice critical PAIR.json [--json OUT] [--unscreened]`: the critical orientations of a pair, as
+// a table with a summary of counts by condition, or as JSON (docs/criticals.md).
 #include <chrono>
 #include <iostream>
 #include <memory>

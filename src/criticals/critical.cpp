@@ -31,8 +31,12 @@ std::string_view to_string(CriticalCondition c) {
 
 namespace {
 
+// A family alive in a bin: its cover at the bin's middle orientation, how far its contact
+// segments can stray from that cover within the bin, and the box holding them all.
 struct BinEntry {
   int family = 0;
+  Curve cover;
+  double margin = 0.0;
   Box box;
 };
 
@@ -51,10 +55,24 @@ class CriticalFinder {
   }
 
   CriticalSet run() {
-    make_bins();
-    for (size_t b = 0; b < bins_.size(); ++b) solve_bin(int(b));
+    // Finer bins cull more pairs but cost a cover per alive family each; measured best
+    // near one bin per eight families (docs/performance.md).
+    const int count = std::clamp(int(families_.size()) / 8, 32, 1 << 12);
+    bin_width_ = kTwoPi / count;
+    switches_.assign(count, {});
     for (size_t i = 0; i < families_.size(); ++i)
-      for (double theta : families_[i].switches) add_segment_end(int(i), theta);
+      for (double theta : families_[i].switches)
+        switches_[bin_of(theta)].push_back({int(i), theta});
+    pending_.assign(count, {});
+    for (int b = 0; b < count; ++b) solve_bin(b);
+    // Pairs are solved once, in the first bin where they may meet, so a root may fall in
+    // another bin; probing its contact segments needs that bin's neighbours.
+    for (int b = 0; b < count; ++b) {
+      if (pending_[b].empty()) continue;
+      current_bin_ = b;
+      fill_bin(b);
+      for (const Pending& p : pending_[b]) keep_point(p.condition, {p.a, p.b}, p.theta, p.at);
+    }
     group();
     return std::move(set_);
   }
@@ -70,41 +88,62 @@ class CriticalFinder {
 
   // ---- Candidate pairs and triples ----------------------------------------------------
 
-  void make_bins() {
-    const int count = std::clamp(int(families_.size()), 64, 4096);
-    bin_width_ = kTwoPi / count;
-    bins_.assign(count, {});
+  int bin_of(double theta) const {
+    const int b = int(std::floor((wrap_angle(theta) + kPi) / bin_width_));
+    return std::clamp(b, 0, int(switches_.size()) - 1);
+  }
+
+  // Families alive in bin b, each with its cover at the bin's middle.
+  void fill_bin(int b) {
+    const double lo = -kPi + b * bin_width_, mid = lo + 0.5 * bin_width_;
+    bin_.clear();
     for (size_t i = 0; i < families_.size(); ++i) {
       const ContactFamily& f = families_[i];
-      int first = 0, n = count;
-      if (!f.always_alive()) {
-        first = bin_of(f.alive.lo);
-        n = std::min(count, int(std::floor((f.alive.lo + kPi - first * bin_width_ + f.alive.span) /
-                                           bin_width_)) +
-                                1);
-      }
-      for (int k = 0; k < n; ++k) {
-        const int b = (first + k) % count;
-        const double lo = -kPi + b * bin_width_;
-        const Box box = family_box(f, lo, lo + bin_width_);
-        if (!box.empty()) bins_[b].push_back({int(i), box.inflated(pair_.tol.criticality)});
-      }
+      if (!alive_within(f, lo, lo + bin_width_)) continue;
+      BinEntry e;
+      e.family = int(i);
+      e.cover = family_cover(f, mid);
+      e.margin = family_drift(f) * 0.5 * bin_width_ + pair_.tol.criticality;
+      e.box = bounding_box(e.cover).inflated(e.margin);
+      bin_.push_back(e);
     }
   }
 
-  int bin_of(double theta) const {
-    const int b = int(std::floor((wrap_angle(theta) + kPi) / bin_width_));
-    return std::clamp(b, 0, int(bins_.size()) - 1);
+  // Two families can meet within the bin only if their covers come within their margins.
+  bool may_meet(const BinEntry& x, const BinEntry& y) const {
+    return x.box.overlaps(y.box) && distance_between(x.cover, y.cover) <= x.margin + y.margin;
+  }
+
+  // Whether the third family can pass through a point where the first two meet within the
+  // bin. Where covers x and y cross at an angle phi, their crossing stays within the meeting
+  // of two bands as wide as their margins: (margin_x + margin_y) / sin(phi) from where it is
+  // at the bin's middle (doubled for the curvature of arcs). Covers that only come close,
+  // or cross nearly tangentially, give no bound.
+  bool may_meet_at(const BinEntry& x, const BinEntry& y, const Intersection& meet,
+                   const BinEntry& z) const {
+    if (meet.kind == IntersectionKind::none || meet.kind == IntersectionKind::overlapping)
+      return true;
+    for (int h = 0; h < meet.count; ++h) {
+      const IntersectionHit& hit = meet.hits[h];
+      const double sine =
+          std::fabs(cross(tangent_at(x.cover, hit.ta0), tangent_at(y.cover, hit.tb0)));
+      const double drift = 2.0 * (x.margin + y.margin);
+      if (drift >= sine * pair_.tol.size) return true;  // could drift across the whole pair
+      if (distance_to_curve(z.cover, hit.point) <= z.margin + drift / sine) return true;
+    }
+    return false;
   }
 
   void solve_bin(int b) {
-    std::vector<BinEntry>& bin = bins_[b];
+    current_bin_ = b;
+    fill_bin(b);
+    std::vector<BinEntry>& bin = bin_;
     std::sort(bin.begin(), bin.end(),
               [](const BinEntry& x, const BinEntry& y) { return x.box.lo.x < y.box.lo.x; });
     std::vector<std::vector<int>> neighbours(bin.size());
     for (size_t i = 0; i < bin.size(); ++i)
       for (size_t j = i + 1; j < bin.size() && bin[j].box.lo.x <= bin[i].box.hi.x; ++j)
-        if (bin[i].box.overlaps(bin[j].box)) {
+        if (may_meet(bin[i], bin[j])) {
           neighbours[i].push_back(int(j));
           neighbours[j].push_back(int(i));
           solve_pair(bin[i].family, bin[j].family);
@@ -113,10 +152,13 @@ class CriticalFinder {
     for (size_t i = 0; i < bin.size(); ++i)
       for (int j : neighbours[i]) {
         if (j <= int(i)) continue;
+        const Intersection meet = intersect(bin[i].cover, bin[j].cover, pair_.tol.geometric);
         for (int k : neighbours[j])
-          if (k > j && std::binary_search(neighbours[i].begin(), neighbours[i].end(), k))
+          if (k > j && std::binary_search(neighbours[i].begin(), neighbours[i].end(), k) &&
+              may_meet_at(bin[i], bin[j], meet, bin[k]))
             solve_triple(bin[i].family, bin[j].family, bin[k].family);
       }
+    for (const auto& [family, theta] : switches_[b]) add_segment_end(family, theta);
   }
 
   // Exact keys (no hashing collisions can drop a pair): family indices in base N.
@@ -127,8 +169,6 @@ class CriticalFinder {
 
   void solve_pair(int i, int j) {
     if (i > j) std::swap(i, j);
-    if (families_[i].moving == families_[j].moving && families_[i].fixed == families_[j].fixed)
-      return;  // two arcs of one pair never meet but at a shared end, a switch
     if (!solved_pairs_.insert(key(i, j)).second) return;
     for (auto [a, b] : {std::pair{i, j}, std::pair{j, i}})
       for (size_t e = 0; e < families_[a].ends.size(); ++e)
@@ -222,11 +262,13 @@ class CriticalFinder {
   }
 
   void keep_point(CriticalCondition c, std::initializer_list<int> fams, double theta, Vec2 x) {
-    if (options_.screen_blocked && blocked_at(x, theta) && !overlap_reaches_free(fams, theta)) {
-      ++set_.stats.blocked;
+    if (!options_.screen_blocked || !blocked_at(x, theta)) return keep(c, fams, theta, x);
+    if (fams.size() == 2 && bin_of(theta) != current_bin_) {
+      pending_[bin_of(theta)].push_back({c, *fams.begin(), *(fams.begin() + 1), theta, x});
       return;
     }
-    keep(c, fams, theta, x);
+    if (overlap_reaches_free(fams, theta)) return keep(c, fams, theta, x);
+    ++set_.stats.blocked;
   }
 
   // Two contact segments that overlap at theta (parallel edges brought into line, equal
@@ -267,7 +309,7 @@ class CriticalFinder {
     std::vector<double> cuts = {0.0, 1.0};
     const Box box = bounding_box(curve).inflated(pair_.tol.criticality);
     std::vector<ContactSegment> others;
-    for (const BinEntry& n : bins_[bin_of(theta)]) {
+    for (const BinEntry& n : bin_) {
       if (n.family == family || !n.box.overlaps(box)) continue;
       for (const ContactSegment& s : segments_of(n.family, theta, others)) {
         const Intersection hit = intersect(curve, s.curve, pair_.tol.geometric);
@@ -334,7 +376,17 @@ class CriticalFinder {
   std::vector<ContactFeature> moving_, fixed_;
   std::vector<ContactFamily> families_;
   std::vector<FamilyEquation> equations_;
-  std::vector<std::vector<BinEntry>> bins_;
+  std::vector<BinEntry> bin_;  // the bin being solved
+  int current_bin_ = 0;
+  // Blocked point criticalities of two families whose overlap must still be probed, by bin.
+  struct Pending {
+    CriticalCondition condition;
+    int a, b;
+    double theta;
+    Vec2 at;
+  };
+  std::vector<std::vector<Pending>> pending_;
+  std::vector<std::vector<std::pair<int, double>>> switches_;  // (family, theta) per bin
   double bin_width_ = kTwoPi;
   std::unordered_set<uint64_t> solved_pairs_, solved_triples_;
   std::vector<ContactSegment> scratch_;

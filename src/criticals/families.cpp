@@ -47,6 +47,9 @@ ContactFamily disc_on_disc(const ContactFeature& m, const ContactFeature& f, dou
   const double rho = f.rho + m.rho;
   fam.radius = std::fabs(rho) <= eps ? 0.0 : std::fabs(rho);
   fam.center = {f.center, -m.center};
+  fam.inward = rho < 0.0;
+  fam.fixed_normals = f.normals;
+  fam.moving_normals = m.normals;
   fam.alive = {f.normals.lo - m.normals.span - m.normals.lo - kPi, f.normals.span + m.normals.span};
   if (fam.radius == 0.0) {
     fam.ends = {fam.center};
@@ -99,8 +102,6 @@ bool alive_at(const ContactFamily& family, double theta, double slack) {
   return d <= family.alive.span + slack || d >= kTwoPi - slack;
 }
 
-namespace {
-
 // Whether [lo, hi] meets the family's alive interval (both taken around the circle).
 bool alive_within(const ContactFamily& family, double lo, double hi) {
   if (family.always_alive()) return true;
@@ -110,29 +111,25 @@ bool alive_within(const ContactFamily& family, double lo, double hi) {
   return d <= hi - lo || d + family.alive.span >= kTwoPi;
 }
 
-// Box of P + R(theta) Q for theta in [lo, hi]: the arc's ends and its axis extremes.
-void add_swept(Box& box, const MovingPoint& m, double lo, double hi) {
-  box.add(m.at(lo));
-  box.add(m.at(hi));
-  const double r = length(m.q);
-  if (r == 0.0) return;
-  const double start = std::atan2(m.q.y, m.q.x) + lo, end = start + (hi - lo);
-  const double quarter = 0.5 * kPi;
-  for (double a = std::ceil(start / quarter) * quarter; a <= end; a += quarter)
-    box.add(m.p + r * unit_vector(a));
+Curve family_cover(const ContactFamily& family, double theta) {
+  if (family.shape != FamilyShape::circle)
+    return make_segment(family.ends[0].at(theta), family.ends[1].at(theta));
+  const Vec2 c = family.center.at(theta);
+  if (family.radius == 0.0) return make_segment(c, c);
+  AngleInterval normals = family.fixed_normals;
+  if (normals.span >= kTwoPi)
+    normals = {family.moving_normals.lo + theta + kPi, family.moving_normals.span};
+  if (normals.span >= kTwoPi) return make_circle(c, family.radius);
+  const double start = normals.lo + (family.inward ? kPi : 0.0);
+  return make_arc(c, family.radius, start, normals.span);
 }
 
-}  // namespace
-
-Box family_box(const ContactFamily& family, double lo, double hi) {
-  Box box;
-  if (!alive_within(family, lo, hi)) return box;
-  if (family.shape == FamilyShape::circle) {
-    add_swept(box, family.center, lo, hi);
-    return box.inflated(family.radius);
-  }
-  for (const MovingPoint& e : family.ends) add_swept(box, e, lo, hi);
-  return box;
+double family_drift(const ContactFamily& family) {
+  if (family.shape != FamilyShape::circle)
+    return std::max(length(family.ends[0].q), length(family.ends[1].q));
+  // A full fixed circle's cover turns with the moving normals.
+  const bool turns = family.fixed_normals.span >= kTwoPi;
+  return length(family.center.q) + (turns ? family.radius : 0.0);
 }
 
 FamilyEquation family_equation(const ContactFamily& family) {

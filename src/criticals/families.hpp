@@ -31,6 +31,10 @@ struct ContactFamily {
   std::vector<MovingPoint> ends;
   MovingPoint center;   // circles only
   double radius = 0.0;  // circles only; 0 for a perfect fit (the family is a point)
+  bool inward = false;  // circles only: contact points at C - radius n (rho_f + rho_m < 0)
+  // Circles only: the normal intervals of the two features (the fixed one in the world, the
+  // moving one in the body frame), which bound the contact arc.
+  AngleInterval fixed_normals, moving_normals;
   // Orientations where the pair touches: [alive.lo, alive.lo + alive.span]; span >= 2pi
   // means always.
   AngleInterval alive;
@@ -48,9 +52,16 @@ std::vector<ContactFamily> contact_families(const Pair& pair);
 // Whether theta lies in the family's alive interval, widened by `slack` radians.
 bool alive_at(const ContactFamily& family, double theta, double slack);
 
-// A box holding every contact segment of the family for theta in [lo, hi] (hi - lo small,
-// at most pi/2), or an empty box when it is nowhere alive there.
-Box family_box(const ContactFamily& family, double lo, double hi);
+// Whether [lo, hi] meets the family's alive interval.
+bool alive_within(const ContactFamily& family, double lo, double hi);
+
+// A curve holding the family's contact segments at theta, alive or not: a line family's
+// whole segment; for circles the arc of the fixed feature's normals (or, for a full fixed
+// circle, of the moving feature's), or the whole circle.
+Curve family_cover(const ContactFamily& family, double theta);
+// How far (per radian of theta) any point of the cover can move: no point of the family's
+// contact segments at theta + d lies farther than |d| times this from the cover at theta.
+double family_drift(const ContactFamily& family);
 
 // The family's curve as an implicit equation g(X, theta) = w |X|^2 + a(theta) . X + b(theta)
 // (w = 0 for lines, whose normal `a` is a unit vector; w = 1 for circles).

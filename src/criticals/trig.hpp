@@ -3,9 +3,10 @@
 // Every contact curve of a line/arc pair moves with theta through points of the form
 // P + R(theta) Q, whose coordinates are degree-1 trigonometric polynomials. Each criticality
 // condition is a polynomial expression in such coordinates, hence a trigonometric
-// polynomial F(theta) = a0 + sum_j (a_j cos j.theta + b_j sin j.theta) of small degree
-// (at most 6 for three contact circles through one point). Its roots are the candidate
-// critical orientations: docs/criticals.md derives each equation.
+// polynomial F(theta) = a0 + sum_j (a_j cos j.theta + b_j sin j.theta) of small degree:
+// products make up to 6 nominally, but rotation invariance cancels the top harmonics, so
+// pair conditions come out of degree 1 and triple points of degree at most 3. Its roots are the
+// candidate critical orientations: docs/criticals.md derives each equation.
 #pragma once
 
 #include <array>

@@ -1,0 +1,98 @@
+// Cost of the critical orientations (critical_orientations on a whole pair). Target (see
+// docs/performance.md, section "Critical orientations"): 1 ms or less for each paper
+// example; random curved pairs of about 100 and 1,000 features, with the measured growth.
+//
+//   BM_CriticalExample/<name>  the paper's examples
+//   BM_CriticalCurved/<n>      random lobed stars, n vertices per part (4n features): each
+//                              vertex's radius jittered by 10%, half the edges arcs
+// Counters: features, families (feature pairs that touch at some orientation), equations
+// solved, criticalities kept, orientations after grouping, and the time per family^2 and per
+// family^3 (the growth of candidate pairs and triples).
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <map>
+#include <random>
+#include <stdexcept>
+
+#include "cslice/critical.hpp"
+#include "support/examples.hpp"
+#include "support/random_polygons.hpp"
+
+namespace {
+
+// A fixed star of radius 3 and a moving one of radius 1 (origin off its centre), three lobes,
+// half the edges arcs; built and parsed once per size, outside the timed loop. Retries with
+// the next seed if the reader rejects the pair.
+const cslice::Pair& curved_pair(int n) {
+  static std::map<int, cslice::Pair> cache;
+  if (auto it = cache.find(n); it != cache.end()) return it->second;
+  for (unsigned seed = 2026; seed < 2100; ++seed) {
+    std::mt19937 rng(seed + static_cast<unsigned>(n));
+    cslice::testkit::StarOptions f;
+    f.vertices = n;
+    f.radius = 3.0;
+    f.radial_jitter = 0.1;
+    f.lobes = 3;
+    f.lobe_depth = 0.3;
+    f.arc_fraction = 0.5;
+    f.min_sagitta = 1e-7;
+    cslice::testkit::StarOptions m = f;
+    m.radius = 1.0;
+    m.center = {0.1, -0.2};
+    const auto fixed = cslice::testkit::random_star(rng, f);
+    const auto moving = cslice::testkit::random_star(rng, m);
+    cslice::LoadResult r =
+        cslice::parse_pair(cslice::testkit::pair_json("curved", {moving}, {fixed}), "curved");
+    if (r.ok()) return cache.emplace(n, std::move(*r.pair)).first->second;
+  }
+  throw std::runtime_error("curved_pair: no seed gave a valid pair");
+}
+
+void run_critical(benchmark::State& state, const cslice::Pair& pair) {
+  cslice::CriticalSet set;
+  for (auto _ : state) {
+    set = cslice::critical_orientations(pair);
+    benchmark::DoNotOptimize(set.orientations.data());
+  }
+  const double families = set.stats.families;
+  state.SetComplexityN(static_cast<int64_t>(families));
+  state.counters["features"] = pair.moving.feature_count() + pair.fixed.feature_count();
+  state.counters["families"] = families;
+  state.counters["equations"] = static_cast<double>(set.stats.equations);
+  state.counters["criticalities"] = static_cast<double>(set.stats.criticalities);
+  state.counters["orientations"] = static_cast<double>(set.orientations.size());
+}
+
+void BM_CriticalExample(benchmark::State& state, const std::string& name) {
+  run_critical(state, cslice::testkit::load_example(name));
+}
+
+void BM_CriticalCurved(benchmark::State& state) {
+  run_critical(state, curved_pair(static_cast<int>(state.range(0))));
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(BM_CriticalExample, knee, std::string("knee"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_CriticalExample, cam, std::string("cam"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_CriticalExample, fixture, std::string("fixture"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_CriticalExample, fastener, std::string("fastener"))
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CriticalCurved)
+    ->Arg(6)
+    ->Arg(12)
+    ->Arg(25)
+    ->Arg(50)
+    ->Unit(benchmark::kMillisecond)
+    ->Complexity();
+// About 400 features: one timed run (about a minute), reported on its own. 1,000 features
+// (Arg 250) takes far longer; docs/performance.md gives the one run we made.
+BENCHMARK(BM_CriticalCurved)
+    ->Name("BM_CriticalCurved400")
+    ->Arg(100)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+
+BENCHMARK_MAIN();
