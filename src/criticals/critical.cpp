@@ -152,11 +152,14 @@ class CriticalFinder {
     for (size_t i = 0; i < bin.size(); ++i)
       for (int j : neighbours[i]) {
         if (j <= int(i)) continue;
-        const Intersection meet = intersect(bin[i].cover, bin[j].cover, pair_.tol.geometric);
-        for (int k : neighbours[j])
-          if (k > j && std::binary_search(neighbours[i].begin(), neighbours[i].end(), k) &&
-              may_meet_at(bin[i], bin[j], meet, bin[k]))
+        std::optional<Intersection> meet;  // computed when a third family needs it
+        for (int k : neighbours[j]) {
+          if (k <= j || !std::binary_search(neighbours[i].begin(), neighbours[i].end(), k))
+            continue;
+          if (!meet) meet = intersect(bin[i].cover, bin[j].cover, pair_.tol.geometric);
+          if (may_meet_at(bin[i], bin[j], *meet, bin[k]))
             solve_triple(bin[i].family, bin[j].family, bin[k].family);
+        }
       }
     for (const auto& [family, theta] : switches_[b]) add_segment_end(family, theta);
   }
