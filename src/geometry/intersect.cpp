@@ -57,24 +57,33 @@ void finish_kind(Intersection& r) {
 }
 
 // Whether p is within eps of the curve's carrier (its line or circle): a cheap necessary
-// condition for being within eps of the curve itself.
-bool near_carrier(const Curve& c, Vec2 p, double eps) {
+// condition for being within eps of the curve itself. `slack` is eps times the length of a
+// segment (unused for arcs), computed once per curve.
+bool near_carrier(const Curve& c, Vec2 p, double eps, double slack) {
   if (c.is_arc()) return std::fabs(distance(p, c.center) - c.radius) <= eps;
-  const Vec2 d = c.to - c.from;
-  return std::fabs(cross(d, p - c.from)) <= eps * length(d);
+  return std::fabs(cross(c.to - c.from, p - c.from)) <= slack;
+}
+double carrier_slack(const Curve& c, double eps) {
+  return c.is_arc() ? 0.0 : eps * length(c.to - c.from);
 }
 
-// Adds endpoint touches that the closed-form solution may have lost to round-off.
-void add_endpoint_touches(Intersection& r, const Curve& a, const Curve& b, double eps) {
+// Adds endpoint touches that the closed-form solution may have lost to round-off. When the
+// carriers were found tangent (within eps of touching), every common point is a tangency:
+// the two curves run within eps of each other there and never cross, even where the exact
+// circles do (a lens thinner than eps), so an end within eps of the other curve touches it
+// from the side the tangency implies.
+void add_endpoint_touches(Intersection& r, const Curve& a, const Curve& b, bool tangent,
+                          double eps) {
+  const double slack_a = carrier_slack(a, eps), slack_b = carrier_slack(b, eps);
   for (double ta : {0.0, 1.0}) {
     const Vec2 p = point_at(a, ta);
-    if (near_carrier(b, p, eps) && distance_to_curve(b, p) <= eps)
-      add_hit(r, point_hit(p, ta, closest_parameter(b, p), false), eps);
+    if (near_carrier(b, p, eps, slack_b) && distance_to_curve(b, p) <= eps)
+      add_hit(r, point_hit(p, ta, closest_parameter(b, p), tangent), eps);
   }
   for (double tb : {0.0, 1.0}) {
     const Vec2 p = point_at(b, tb);
-    if (near_carrier(a, p, eps) && distance_to_curve(a, p) <= eps)
-      add_hit(r, point_hit(p, closest_parameter(a, p), tb, false), eps);
+    if (near_carrier(a, p, eps, slack_a) && distance_to_curve(a, p) <= eps)
+      add_hit(r, point_hit(p, closest_parameter(a, p), tb, tangent), eps);
   }
 }
 
@@ -192,7 +201,7 @@ Intersection intersect_segment_segment(const Curve& a, const Curve& b, double ep
         add_hit(r, point_hit(lerp(a.from, a.to, tc), tc, std::clamp(u, 0.0, 1.0), false), eps);
       }
     }
-    add_endpoint_touches(r, a, b, eps);
+    add_endpoint_touches(r, a, b, false, eps);
   }
   finish_kind(r);
   return r;
@@ -210,7 +219,8 @@ Intersection intersect_segment_arc(const Curve& s, const Curve& arc, double eps)
   const Vec2 q = s.from + t0 * dir;
   const double h = distance(q, arc.center);
   if (h <= arc.radius + eps) {
-    if (h >= arc.radius - eps) {
+    const bool tangent = h >= arc.radius - eps;
+    if (tangent) {
       const Vec2 p = h > 0.0 ? arc.center + (arc.radius / h) * (q - arc.center) : q;
       add_if_on_both(r, s, arc, p, true, eps);
     } else {
@@ -219,7 +229,7 @@ Intersection intersect_segment_arc(const Curve& s, const Curve& arc, double eps)
         add_if_on_both(r, s, arc, q + (sign * k) * dir, false, eps);
       }
     }
-    add_endpoint_touches(r, s, arc, eps);
+    add_endpoint_touches(r, s, arc, tangent, eps);
   }
   finish_kind(r);
   return r;
@@ -255,7 +265,7 @@ Intersection intersect_arc_arc(const Curve& a, const Curve& b, double eps) {
       points[n++] = a.center + along * u - h * perp_left(u);
     }
     for (int i = 0; i < n; ++i) add_if_on_both(r, a, b, points[i], tangent, eps);
-    add_endpoint_touches(r, a, b, eps);
+    add_endpoint_touches(r, a, b, tangent, eps);
   }
   finish_kind(r);
   return r;

@@ -3,6 +3,7 @@
 // and faces traced from a half-edge structure, holes attached to the faces around them.
 #pragma once
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -18,14 +19,61 @@ struct EdgeLabel {
   bool blocked_left = true;
 };
 
+// The labels of one edge: nearly always one or two, so those live in place and only more
+// go to the heap (an edge is built per piece, and one allocation each dominated).
+class EdgeLabels {
+ public:
+  EdgeLabels() = default;
+  EdgeLabels(const EdgeLabels& o) { *this = o; }
+  EdgeLabels& operator=(const EdgeLabels& o) {
+    if (this != &o) {
+      size_ = 0;
+      more_.clear();
+      for (const EdgeLabel& l : o) push_back(l);
+    }
+    return *this;
+  }
+  EdgeLabels(EdgeLabels&& o) noexcept { *this = std::move(o); }
+  EdgeLabels& operator=(EdgeLabels&& o) noexcept {
+    size_ = o.size_;
+    local_ = o.local_;
+    more_ = std::move(o.more_);
+    o.size_ = 0;
+    return *this;
+  }
+  void push_back(EdgeLabel l) {
+    if (size_ < kLocal) {
+      local_[size_] = l;
+    } else {
+      if (size_ == kLocal) more_.assign(local_.begin(), local_.end());
+      more_.push_back(l);
+    }
+    ++size_;
+  }
+  size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  const EdgeLabel* begin() const { return size_ <= kLocal ? local_.data() : more_.data(); }
+  const EdgeLabel* end() const { return begin() + size_; }
+  const EdgeLabel& front() const { return *begin(); }
+
+ private:
+  static constexpr size_t kLocal = 2;
+  size_t size_ = 0;
+  std::array<EdgeLabel, kLocal> local_{};
+  std::vector<EdgeLabel> more_;  // all of them, once there are more than kLocal
+};
+
 struct ArrangementEdge {
   int u = 0, v = 0;  // vertex ids; the curve runs from u to v
   Curve curve;
-  std::vector<EdgeLabel> labels;
+  EdgeLabels labels;
   int source = -1;  // index of the curve this piece was cut from (the first, when merged)
   // Unit tangents of the unsnapped contact segment at u and at v (both along the curve):
   // snapping ends to merged vertices would tilt a short piece by up to eps / length.
   Vec2 tangent_u, tangent_v;
+  // Where the piece really starts and ends on that contact segment, before snapping to the
+  // vertices moved them by up to about eps: orders pieces that leave a vertex side by side.
+  Vec2 point_u, point_v;
 };
 
 // A closed walk of half-edges with its face on the left.

@@ -100,12 +100,14 @@ class SliceBuilder {
   // needs blocking from both of its sides. Two labels leaving v in opposite directions with
   // their blocked sides on one side (one contact curve continuing through v, possibly as
   // two segments meeting end to end) block the whole half plane on that side.
-  bool sectors_explained_locally(int v) const {
+  bool sectors_explained_locally(int v) {
     const std::span<const int> out = arr_.outgoing(int(v));
     const int d = int(out.size());
-    std::vector<Vec2> dir(d);
+    std::vector<Vec2>& dir = scratch_dir_;  // reused: called for most vertices of big slices
+    dir.resize(d);
     for (int i = 0; i < d; ++i) dir[i] = arr_.direction(out[i]);
-    std::vector<char> explained(d, false);
+    std::vector<char>& explained = scratch_explained_;
+    explained.assign(d, false);
     for (int i = 0; i < d; ++i) {
       const int next = (i + 1) % d;
       const bool from_cw_side = has_label_blocking(out[i], true);
@@ -172,8 +174,9 @@ class SliceBuilder {
   }
 
   ContactPiece piece_of_half_edge(int h) const {
-    std::vector<int> ids = label_ids(h / 2);
-    return {ids.front(), arr_.half_curve(h)};
+    int lowest = arr_.edges[h / 2].labels.front().segment;
+    for (const EdgeLabel& l : arr_.edges[h / 2].labels) lowest = std::min(lowest, l.segment);
+    return {lowest, arr_.half_curve(h)};
   }
 
   void collect_components() {
@@ -210,17 +213,18 @@ class SliceBuilder {
   }
 
   void build_contact_graph() {
-    std::vector<int> nodes;
-    auto add_meetings = [&](const std::vector<int>& ids, Vec2 at) {
-      for (size_t i = 0; i < ids.size(); ++i)
-        for (size_t j = i + 1; j < ids.size(); ++j)
-          slice_.contact_graph.edges.push_back({ids[i], ids[j], at});
+    std::vector<int> nodes, ids;
+    auto add_meetings = [&](const std::vector<int>& at_ids, Vec2 at) {
+      for (size_t i = 0; i < at_ids.size(); ++i)
+        for (size_t j = i + 1; j < at_ids.size(); ++j)
+          slice_.contact_graph.edges.push_back({at_ids[i], at_ids[j], at});
     };
     for (size_t v = 0; v < arr_.vertices.size(); ++v) {
-      std::vector<int> ids;
+      ids.clear();
       for (int h : arr_.outgoing(int(v)))
         if (realizable_[h / 2])
-          for (int id : label_ids(h / 2)) ids.push_back(id);
+          for (const EdgeLabel& l : arr_.edges[h / 2].labels) ids.push_back(l.segment);
+      if (ids.empty()) continue;
       std::sort(ids.begin(), ids.end());
       ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
       nodes.insert(nodes.end(), ids.begin(), ids.end());
@@ -243,6 +247,8 @@ class SliceBuilder {
   std::vector<char> blocked_;
   std::vector<Vec2> samples_;
   std::vector<char> realizable_;
+  std::vector<Vec2> scratch_dir_;
+  std::vector<char> scratch_explained_;
 };
 
 }  // namespace
