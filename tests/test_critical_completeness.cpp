@@ -54,3 +54,16 @@ TEST(CriticalCompleteness, HundredRandomCurvedPairs) {
   std::printf("100 random pairs: %d orientations, %d extraneous, %d near-critical, %lld slices\n",
               total.orientations, total.extraneous, total.near_critical, total.slices);
 }
+
+// Larger pairs (8 and 10 vertices per loop, holes in every third): denser arrangements with
+// more near-coincident criticalities.
+TEST(CriticalCompleteness, TenLargerRandomCurvedPairs) {
+  testkit::CompletenessReport total;
+  for (unsigned seed = 5010; seed < 5020; ++seed) {
+    std::mt19937 rng(seed);
+    const testkit::RandomPair p = testkit::random_pair(rng, 8, 10, (seed - 5000) % 3 == 0);
+    expect_complete(p.pair, "larger pair " + std::to_string(seed), &total);
+  }
+  std::printf("10 larger pairs: %d orientations, %d extraneous, %d near-critical, %lld slices\n",
+              total.orientations, total.extraneous, total.near_critical, total.slices);
+}

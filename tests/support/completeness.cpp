@@ -17,7 +17,8 @@ std::string describe(double theta, const std::string& what) {
 
 struct Checker {
   const Pair& pair;
-  const Pair& fine;                      // the pair with a finer geometric epsilon
+  const std::vector<Pair>& finer;        // the pair with finer and finer geometric epsilons
+  const Pair* fine = nullptr;            // the pair with a finer geometric epsilon
   const std::vector<double>& criticals;  // sorted, in [-pi, pi)
   const CompletenessOptions& options;
   CompletenessReport& report;
@@ -31,7 +32,7 @@ struct Checker {
 
   Slice fine_slice(double theta) {
     ++report.slices;
-    return compute_slice(fine, theta);
+    return compute_slice(*fine, theta);
   }
 
   // Whether a reported critical orientation lies in [lo, hi] (hi - lo < 2 pi, lo may be
@@ -66,6 +67,14 @@ struct Checker {
   // reported critical orientation c: with a finer epsilon it must leave the bracket and
   // reappear at least halfway closer to c, or at c itself. A real change stays put.
   bool resolution_artifact(double a, double b) {
+    for (const Pair& p : finer) {
+      fine = &p;
+      if (moves_towards_critical(a, b)) return true;
+    }
+    return false;
+  }
+
+  bool moves_towards_critical(double a, double b) {
     if (criticals.empty() || !slices_equivalent(fine_slice(a), fine_slice(b)).equivalent)
       return false;
     const double m = 0.5 * (a + b);
@@ -145,9 +154,10 @@ CompletenessReport check_completeness(const Pair& pair, const CriticalSet& set,
   std::vector<double> criticals;
   for (const CriticalOrientation& o : set.orientations) criticals.push_back(o.theta);
   report.orientations = int(criticals.size());
-  Pair fine = pair;
-  fine.tol.geometric /= options.epsilon_shrink;
-  Checker checker{pair, fine, criticals, options, report};
+  std::vector<Pair> finer(2, pair);
+  finer[0].tol.geometric /= options.epsilon_shrink;
+  finer[1].tol.geometric = finer[0].tol.geometric / options.epsilon_shrink;
+  Checker checker{pair, finer, nullptr, criticals, options, report};
   checker.check_intervals();
   checker.check_dense();
   return report;

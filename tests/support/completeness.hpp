@@ -21,7 +21,9 @@ struct CompletenessOptions {
   // epsilon of each other for about sqrt(epsilon / relative curvature) radians). A real
   // change stays put when the epsilon shrinks; one that is the slice's own resolution moves
   // towards its critical orientation. Each change found is re-checked with the epsilon
-  // divided by this factor, and counted as near-critical when it is gone.
+  // divided by this factor (and, failing that, by its square), and counted as near-critical
+  // when it left its bracket and reappeared at least halfway closer to a reported critical
+  // orientation.
   double epsilon_shrink = 100.0;
 };
 
