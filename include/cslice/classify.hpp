@@ -29,6 +29,8 @@ class PlacementTester {
   PlacementTester(const PlacementTester&) = delete;
   PlacementTester& operator=(const PlacementTester&) = delete;
   Placement classify(const Pose& pose);
+  // classify(pose) == Placement::blocked, without measuring clearance when it is not.
+  bool blocked(const Pose& pose);
   // Smallest distance between the placed boundaries (0 when they meet).
   double boundary_distance(const Pose& pose);
 

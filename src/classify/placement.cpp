@@ -143,6 +143,13 @@ Placement PlacementTester::classify(const Pose& pose) {
   return boundaries_within(pair_.tol.contact) ? Placement::contact : Placement::free;
 }
 
+bool PlacementTester::blocked(const Pose& pose) {
+  place(pose);
+  if (!moving_box_.inflated(pair_.tol.contact).overlaps(pair_.fixed.box))
+    return pair_.fixed.enclosure;
+  return interiors_overlap();
+}
+
 double PlacementTester::boundary_distance(const Pose& pose) {
   place(pose);
   double best = std::numeric_limits<double>::infinity();

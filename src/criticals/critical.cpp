@@ -7,6 +7,7 @@
 // there), and only families whose boxes overlap in some bin are paired (a sweep along x).
 // Each pair or triple is solved once over the whole circle.
 #include <algorithm>
+#include <map>
 #include <unordered_set>
 
 #include "criticals/events.hpp"
@@ -261,7 +262,15 @@ class CriticalFinder {
   // ---- Screening: criticalities inside blocked space change nothing --------------------
 
   bool blocked_at(Vec2 x, double theta) {
-    return tester_.classify({x.x, x.y, theta}) == Placement::blocked;
+    // Several equations find one event (an end of a on b and of b on a, a vertex with both
+    // its edges): test each configuration once.
+    const double cell = pair_.tol.criticality;
+    const std::array<long long, 3> key{std::llround(theta / pair_.tol.critical_angle),
+                                       std::llround(x.x / cell), std::llround(x.y / cell)};
+    if (auto it = screened_.find(key); it != screened_.end()) return it->second;
+    const bool b = tester_.blocked({x.x, x.y, theta});
+    screened_.emplace(key, b);
+    return b;
   }
 
   void keep_point(CriticalCondition c, std::initializer_list<int> fams, double theta, Vec2 x) {
@@ -394,6 +403,7 @@ class CriticalFinder {
   std::unordered_set<uint64_t> solved_pairs_, solved_triples_;
   std::vector<ContactSegment> scratch_;
   std::vector<Criticality> kept_;
+  std::map<std::array<long long, 3>, bool> screened_;  // blocked_at, by configuration cell
   CriticalSet set_;
 };
 

@@ -44,7 +44,7 @@ class SliceBuilder {
   }
 
  private:
-  bool blocked_at(Vec2 p) { return tester_.classify({p.x, p.y, theta_}) == Placement::blocked; }
+  bool blocked_at(Vec2 p) { return tester_.blocked({p.x, p.y, theta_}); }
 
   void label_faces() {
     blocked_.assign(arr_.faces.size(), false);
