@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job on the bundled examples: installs dependencies (as root), builds cslice, and
 # writes for every example its description (info), a picture of the placed pair and of its
-# configuration-space slice into out/.
+# configuration-space slice, its critical orientations and its sliced configuration space into
+# out/, then the paper's run-time table (out/stats.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -25,5 +26,9 @@ for pair in examples/*.json; do
   "$cslice" slice "$pair" --theta "$theta" --json "out/$name-slice.json" --svg "out/$name-slice.svg"
   "$cslice" critical "$pair" --json "out/$name-critical.json"
   "$cslice" critical "$pair" | tail -8
-  echo "   pictures: out/$name.svg, out/$name-slice.svg; data: out/$name-slice.json, out/$name-critical.json"
+  "$cslice" compute "$pair" -o "out/$name-space.json"
+  echo "   pictures: out/$name.svg, out/$name-slice.svg; data: out/$name-{slice,critical,space}.json"
 done
+echo "== run-time table (the paper's Figure 8, measured here)"
+"$cslice" stats examples/knee.json examples/cam.json examples/fixture.json examples/fastener.json \
+  | tee out/stats.md

@@ -50,5 +50,7 @@ void register_render(CLI::App& app);
 void register_equivalent(CLI::App& app);
 void register_slice(CLI::App& app);
 void register_critical(CLI::App& app);
+void register_compute(CLI::App& app);
+void register_stats(CLI::App& app);
 
 }  // namespace cslice::cli

@@ -306,15 +306,25 @@ class CriticalFinder {
   void add_segment_end(int family, double theta) {
     std::vector<ContactSegment> own;
     segments_of(family, theta, own);
+    // Cheap probes first (the ends and each segment's middle); cutting into pieces only when
+    // those are all blocked.
     std::vector<Vec2> probes;
     for (const MovingPoint& e : families_[family].ends) probes.push_back(e.at(theta));
-    for (const ContactSegment& s : own) add_piece_probes(family, s.curve, theta, probes);
-    if (options_.screen_blocked &&
-        std::all_of(probes.begin(), probes.end(), [&](Vec2 p) { return blocked_at(p, theta); })) {
-      ++set_.stats.blocked;
-      return;
+    for (const ContactSegment& s : own) probes.push_back(point_at(s.curve, 0.5));
+    const Vec2 at = probes.front();
+    auto all_blocked = [&] {
+      return std::all_of(probes.begin(), probes.end(),
+                         [&](Vec2 p) { return blocked_at(p, theta); });
+    };
+    if (options_.screen_blocked && all_blocked()) {
+      probes.clear();
+      for (const ContactSegment& s : own) add_piece_probes(family, s.curve, theta, probes);
+      if (all_blocked()) {
+        ++set_.stats.blocked;
+        return;
+      }
     }
-    keep(CriticalCondition::segment_end, {family}, theta, probes.front());
+    keep(CriticalCondition::segment_end, {family}, theta, at);
   }
 
   void add_piece_probes(int family, const Curve& curve, double theta, std::vector<Vec2>& probes) {

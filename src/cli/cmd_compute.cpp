@@ -1,0 +1,44 @@
+// `cslice compute PAIR.json -o SPACE.json [--threads N]`: the sliced configuration space of a
+// pair (critical orientations, slices, correspondence), as JSON (docs/space-format.md).
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "cslice/space.hpp"
+
+namespace cslice::cli {
+
+namespace {
+
+struct ComputeCommand {
+  std::string pair_path;
+  std::string out_path;
+  int threads = 0;
+};
+
+void run(const ComputeCommand& cmd) {
+  const Pair pair = load_pair_or_exit(cmd.pair_path);
+  if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
+  SpaceOptions options;
+  options.threads = cmd.threads;
+  const SlicedSpace space = compute_space(pair, options);
+  deliver_outputs({{cmd.out_path, space_to_json(pair, space)}});
+}
+
+}  // namespace
+
+void register_compute(CLI::App& app) {
+  auto cmd = std::make_shared<ComputeCommand>();
+  CLI::App* sub = app.add_subcommand(
+      "compute",
+      "Compute the sliced configuration space of a pair: a slice at every critical\n"
+      "orientation, one in every interval between them, and enough in between for linear\n"
+      "interpolation to stay within the pair's tolerance (docs/space-format.md).");
+  sub->add_option("pair", cmd->pair_path, "Pair file (JSON, see docs/pair-format.md)")->required();
+  sub->add_option("-o,--output", cmd->out_path, "Space file to write; - for standard output")
+      ->required();
+  sub->add_option("--threads", cmd->threads,
+                  "Slices computed at once (default 0: every core); the output is the same");
+  sub->callback([cmd] { run(*cmd); });
+}
+
+}  // namespace cslice::cli

@@ -1,0 +1,87 @@
+// `cslice stats PAIR.json... [--threads N]`: the paper's run-time table (Figure 8, section
+// 2.6) for the given pairs, measured here, as a Markdown table with one row per pair.
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.hpp"
+#include "cslice/space.hpp"
+
+namespace cslice::cli {
+
+namespace {
+
+struct StatsCommand {
+  std::vector<std::string> pair_paths;
+  int threads = 1;
+};
+
+// Three significant digits: run-to-run noise swamps any more.
+std::string milliseconds(double seconds) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", seconds * 1e3);
+  return buf;
+}
+
+// "2 (5 of 40 slices)": the most free components any slice has, and how many slices have it.
+std::string components_cell(const SlicedSpace& space) {
+  size_t most = 0;
+  for (const SpaceSlice& s : space.slices) most = std::max(most, s.slice.free_components.size());
+  const auto with_most = std::count_if(space.slices.begin(), space.slices.end(), [&](auto& s) {
+    return s.slice.free_components.size() == most;
+  });
+  return std::to_string(most) + " (" + std::to_string(with_most) + " of " +
+         std::to_string(space.slices.size()) + " slices)";
+}
+
+std::string row(const Pair& pair, const SlicedSpace& space) {
+  const int moving = pair.moving.feature_count(), fixed = pair.fixed.feature_count();
+  const std::vector<std::string> cells = {
+      pair.name,
+      std::to_string(moving + fixed) + " (" + std::to_string(moving) + "+" + std::to_string(fixed) +
+          ")",
+      std::to_string(space.criticals.orientations.size()) + " (" +
+          std::to_string(space.criticals.stats.criticalities) + ")",
+      milliseconds(space.seconds_criticals),
+      std::to_string(space.slices.size()),
+      milliseconds(space.seconds_slices),
+      milliseconds(space.seconds_criticals + space.seconds_slices),
+      components_cell(space)};
+  std::string out = "|";
+  for (const std::string& c : cells) out += " " + c + " |";
+  return out + "\n";
+}
+
+void run(const StatsCommand& cmd) {
+  if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
+  // Every pair is read before anything is computed or printed: bad input prints nothing.
+  std::vector<Pair> pairs;
+  for (const std::string& path : cmd.pair_paths) pairs.push_back(load_pair_or_exit(path));
+  SpaceOptions options;
+  options.threads = cmd.threads;
+  std::string out =
+      "| example | features (moving+fixed) | critical orientations (criticalities) | time, ms "
+      "| slices | time, ms | total time, ms | free components (slices with that many) |\n"
+      "| :--- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+  for (const Pair& pair : pairs) out += row(pair, compute_space(pair, options));
+  std::cout << out << std::flush;
+}
+
+}  // namespace
+
+void register_stats(CLI::App& app) {
+  auto cmd = std::make_shared<StatsCommand>();
+  CLI::App* sub = app.add_subcommand(
+      "stats",
+      "The paper's run-time table (Figure 8) for the given pairs, as Markdown: features,\n"
+      "criticalities and the time to find them, slices and the time to compute them, total\n"
+      "time, and the most free components in a slice.");
+  sub->add_option("pairs", cmd->pair_paths, "Pair files (JSON, see docs/pair-format.md)")
+      ->required();
+  sub->add_option("--threads", cmd->threads,
+                  "Slices computed at once (default 1, as the paper's timings; 0: every core)");
+  sub->callback([cmd] { run(*cmd); });
+}
+
+}  // namespace cslice::cli

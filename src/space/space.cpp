@@ -1,0 +1,170 @@
+// The sliced configuration space: which orientations get a slice, the slices themselves
+// (in parallel with oneTBB), and the correspondence of contact segments between neighbours.
+#include "cslice/space.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iterator>
+
+#include "criticals/families.hpp"
+#include "cslice/slice_io.hpp"
+
+namespace cslice {
+
+namespace {
+
+// An orientation to slice at, before the slice is computed.
+struct Planned {
+  double theta = 0.0;
+  SliceKind kind = SliceKind::interval;
+  int interval = 0;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Slices in the open interval from critical orientation `a` to `b` (b > a), `step` apart at
+// most. An even number of sub-intervals puts one slice exactly in the middle: the interval's
+// representative, furthest from both critical ends.
+void plan_interval(double a, double b, double step, int interval, std::vector<Planned>& out) {
+  const double length = b - a;
+  const int m = 2 * std::max(1, static_cast<int>(std::ceil(length / (2.0 * step))));
+  for (int k = 1; k < m; ++k) {
+    const SliceKind kind = 2 * k == m ? SliceKind::interval : SliceKind::intermediate;
+    out.push_back({wrap_angle(a + length * k / m), kind, interval});
+  }
+}
+
+// Every orientation to slice at, sorted by theta. Interval i runs from critical orientation
+// i to i + 1; the last wraps to the first plus 2 pi. With no critical orientation the whole
+// turn is one interval, anchored by an intermediate slice at -pi.
+std::vector<Planned> plan_slices(const CriticalSet& criticals, double step) {
+  std::vector<double> starts;
+  for (const CriticalOrientation& o : criticals.orientations) starts.push_back(o.theta);
+  const bool none = starts.empty();
+  if (none) starts.push_back(-kPi);
+  std::vector<Planned> out;
+  const int n = static_cast<int>(starts.size());
+  for (int i = 0; i < n; ++i) {
+    out.push_back({starts[i], none ? SliceKind::intermediate : SliceKind::critical, i});
+    const double end = i + 1 < n ? starts[i + 1] : starts.front() + kTwoPi;
+    plan_interval(starts[i], end, step, i, out);
+  }
+  std::stable_sort(out.begin(), out.end(),
+                   [](const Planned& x, const Planned& y) { return x.theta < y.theta; });
+  return out;
+}
+
+// Each slice depends only on the pair and its theta and is stored at its own index, so the
+// result is the same whatever the number of threads or the order they run in.
+std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Planned>& plan,
+                                       int threads) {
+  std::vector<SpaceSlice> out(plan.size());
+  const auto body = [&](const tbb::blocked_range<size_t>& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i)
+      out[i] = {plan[i].theta, plan[i].kind, plan[i].interval, compute_slice(pair, plan[i].theta)};
+  };
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  // Grain 1: slices differ widely in cost, so let the scheduler balance single slices.
+  arena.execute([&] { tbb::parallel_for(tbb::blocked_range<size_t>(0, plan.size(), 1), body); });
+  return out;
+}
+
+SliceCorrespondence correspond(int from, int to, const std::vector<SegmentLabel>& a,
+                               const std::vector<SegmentLabel>& b) {
+  SliceCorrespondence c;
+  c.from = from;
+  c.to = to;
+  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(c.kept));
+  std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(c.appearing));
+  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(c.vanishing));
+  return c;
+}
+
+// Slice i to slice i + 1, and the last back to the first: theta = -pi and pi are one slice.
+std::vector<SliceCorrespondence> correspondences(const std::vector<SpaceSlice>& slices) {
+  std::vector<std::vector<SegmentLabel>> labels;
+  for (const SpaceSlice& s : slices) labels.push_back(realizable_labels(s.slice));
+  std::vector<SliceCorrespondence> out;
+  const int n = static_cast<int>(slices.size());
+  for (int i = 0; i < n && n > 1; ++i) {
+    const int j = (i + 1) % n;
+    out.push_back(correspond(i, j, labels[i], labels[j]));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string_view to_string(SliceKind k) {
+  switch (k) {
+    case SliceKind::critical:
+      return "critical";
+    case SliceKind::interval:
+      return "interval";
+    case SliceKind::intermediate:
+      return "intermediate";
+  }
+  return "unknown";
+}
+
+// Every contact curve is built from points O = P + R(theta) Q (docs/criticals.md, contact
+// families): a line's ends, an arc's centre and candidate ends. A line's inner points have Q
+// between its ends' (Q is affine along it), and an arc's point of world normal n has the
+// centre's Q, so the largest |Q| over the families' defining points bounds them all. It is
+// not the moving part's reach: a moving segment on a fixed arc of radius r slides along it,
+// Q = r u - a_m, and a disc turning about its own centre has Q = 0.
+double contact_reach(const Pair& pair) {
+  double reach = 0.0;
+  for (const ContactFamily& f : contact_families(pair)) {
+    if (f.shape == FamilyShape::circle) reach = std::max(reach, length(f.center.q));
+    for (const MovingPoint& e : f.ends) reach = std::max(reach, length(e.q));
+  }
+  return reach;
+}
+
+// Between two slices dtheta apart, a point P + R(theta) Q moves along a circle of radius |Q|
+// and leaves the chord joining its two ends by at most the sagitta
+// |Q| (1 - cos(dtheta / 2)) <= |Q| dtheta^2 / 8. Linear interpolation of the defining points
+// therefore stays within `tolerance` of the true contact curves when
+// dtheta <= sqrt(8 tolerance / |Q|max). The cap keeps slices at least a quarter turn apart
+// for tiny or point-like moving parts, where the bound says nothing useful.
+double interpolation_step(double reach, double tolerance) {
+  const double cap = kPi / 2;
+  if (!(reach > 0.0)) return cap;
+  return std::min(cap, std::sqrt(8.0 * tolerance / reach));
+}
+
+std::vector<SegmentLabel> realizable_labels(const Slice& slice) {
+  std::vector<SegmentLabel> out;
+  for (int id : realizable_segment_ids(slice))
+    for (const ContactSegment& s : slice.contact_segments)
+      if (s.id == id) out.push_back({s.moving_feature, s.fixed_feature});
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+SlicedSpace compute_space(const Pair& pair, const SpaceOptions& options) {
+  SlicedSpace space;
+  auto start = std::chrono::steady_clock::now();
+  space.criticals = critical_orientations(pair, options.critical);
+  space.seconds_criticals = seconds_since(start);
+
+  start = std::chrono::steady_clock::now();
+  space.reach = contact_reach(pair);
+  space.max_step = interpolation_step(space.reach, pair.tol.contact);
+  space.slices =
+      compute_slices(pair, plan_slices(space.criticals, space.max_step), options.threads);
+  space.correspondence = correspondences(space.slices);
+  space.seconds_slices = seconds_since(start);
+  return space;
+}
+
+}  // namespace cslice

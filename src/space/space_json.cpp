@@ -1,0 +1,105 @@
+// The sliced space as JSON (docs/space-format.md): per slice a summary, not the whole slice
+// (`cslice slice` gives that), so the file stays small enough to read back quickly.
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "cslice/space.hpp"
+
+namespace cslice {
+
+namespace {
+
+// Ordered so the output lists fields in the documented order.
+using json = nlohmann::ordered_json;
+
+// NaN and infinities have no JSON spelling; null says "no value".
+json number_or_null(double v) {
+  return std::isfinite(v) ? json(v) : json(nullptr);
+}
+
+json labels_json(const std::vector<SegmentLabel>& labels) {
+  json out = json::array();
+  for (const SegmentLabel& l : labels)
+    out.push_back(json::array({l.moving_feature, l.fixed_feature}));
+  return out;
+}
+
+json criticals_json(const CriticalSet& set) {
+  json out = json::array();
+  for (const CriticalOrientation& o : set.orientations) {
+    json conditions = json::array();
+    for (const Criticality& k : o.criticalities) conditions.push_back(to_string(k.condition));
+    out.push_back({{"theta", o.theta}, {"conditions", std::move(conditions)}});
+  }
+  return out;
+}
+
+json components_json(const Slice& slice) {
+  json out = json::array();
+  for (const FreeComponent& c : slice.free_components)
+    out.push_back({{"id", c.id},
+                   {"bounded", c.bounded},
+                   {"area", c.bounded ? number_or_null(c.area) : json(nullptr)},
+                   {"sample", json::array({c.sample.x, c.sample.y})}});
+  return out;
+}
+
+json slice_json(const SpaceSlice& s) {
+  int bounded = 0;
+  for (const FreeComponent& c : s.slice.free_components) bounded += c.bounded ? 1 : 0;
+  return {{"theta", s.theta},
+          {"kind", to_string(s.kind)},
+          {"interval", s.interval},
+          {"free_components", s.slice.free_components.size()},
+          {"bounded_free_components", bounded},
+          {"components", components_json(s.slice)},
+          {"realizable_labels", labels_json(realizable_labels(s.slice))},
+          {"contact_graph_edges", s.slice.contact_graph.edges.size()}};
+}
+
+json correspondence_json(const std::vector<SliceCorrespondence>& list) {
+  json out = json::array();
+  for (const SliceCorrespondence& c : list)
+    out.push_back({{"from", c.from},
+                   {"to", c.to},
+                   {"kept", labels_json(c.kept)},
+                   {"appearing", labels_json(c.appearing)},
+                   {"vanishing", labels_json(c.vanishing)}});
+  return out;
+}
+
+json counts_json(const SlicedSpace& space) {
+  int by_kind[3] = {};
+  for (const SpaceSlice& s : space.slices) by_kind[static_cast<int>(s.kind)] += 1;
+  return {{"critical_orientations", space.criticals.orientations.size()},
+          {"criticalities", space.criticals.stats.criticalities},
+          {"slices", space.slices.size()},
+          {"critical_slices", by_kind[0]},
+          {"interval_slices", by_kind[1]},
+          {"intermediate_slices", by_kind[2]}};
+}
+
+}  // namespace
+
+std::string space_to_json(const Pair& pair, const SlicedSpace& space, bool with_timing) {
+  json out = {{"format", "cslice-space"},
+              {"version", 1},
+              {"pair", pair.name},
+              {"units", pair.units},
+              {"tolerance",
+               {{"contact", pair.tol.contact},
+                {"geometric", pair.tol.geometric},
+                {"critical_angle", pair.tol.critical_angle}}},
+              {"interpolation", {{"reach", space.reach}, {"max_step", space.max_step}}},
+              {"critical_orientations", criticals_json(space.criticals)},
+              {"slices", json::array()},
+              {"correspondence", correspondence_json(space.correspondence)},
+              {"counts", counts_json(space)}};
+  for (const SpaceSlice& s : space.slices) out["slices"].push_back(slice_json(s));
+  if (with_timing)
+    out["timing"] = {{"criticals_seconds", space.seconds_criticals},
+                     {"slices_seconds", space.seconds_slices}};
+  return out.dump(2) + "\n";
+}
+
+}  // namespace cslice

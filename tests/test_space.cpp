@@ -1,0 +1,277 @@
+// The sliced configuration space: which orientations are sliced, the interpolation step, the
+// correspondence of contact segments, determinism under threads, and the `cslice compute`
+// and `cslice stats` commands.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cslice/space.hpp"
+#include "support/cli_run.hpp"
+#include "support/examples.hpp"
+
+using namespace cslice;
+
+namespace {
+
+// Round-off slack when comparing angles built as a + L k / m (radians).
+constexpr double kAngleSlack = 1e-12;
+
+const char* const kPaperExamples[] = {"knee", "cam", "fixture", "fastener"};
+
+int count_kind(const SlicedSpace& space, SliceKind kind) {
+  int n = 0;
+  for (const SpaceSlice& s : space.slices) n += s.kind == kind ? 1 : 0;
+  return n;
+}
+
+// Gap from slice i to the next, cyclically (the last one's successor is the first + 2 pi).
+double gap_after(const SlicedSpace& space, size_t i) {
+  const size_t n = space.slices.size();
+  const double next = i + 1 < n ? space.slices[i + 1].theta : space.slices[0].theta + kTwoPi;
+  return next - space.slices[i].theta;
+}
+
+// The structural promises every computed space keeps.
+void expect_well_formed(const SlicedSpace& space, const std::string& name) {
+  const size_t criticals = space.criticals.orientations.size();
+  ASSERT_FALSE(space.slices.empty()) << name;
+  EXPECT_GE(space.slices.size(), 2 * criticals) << name;
+  EXPECT_EQ(count_kind(space, SliceKind::critical), static_cast<int>(criticals)) << name;
+  EXPECT_EQ(count_kind(space, SliceKind::interval),
+            static_cast<int>(std::max<size_t>(1, criticals)))
+      << name;
+  for (size_t i = 0; i < space.slices.size(); ++i) {
+    const SpaceSlice& s = space.slices[i];
+    EXPECT_GE(s.theta, -kPi) << name;
+    EXPECT_LT(s.theta, kPi) << name;
+    EXPECT_EQ(s.slice.theta, s.theta) << name;
+    EXPECT_GT(gap_after(space, i), 0.0) << name << ": slices " << i << " out of order";
+    EXPECT_LE(gap_after(space, i), space.max_step + kAngleSlack) << name << " after slice " << i;
+  }
+}
+
+// The correspondence is the set algebra of the two slices' labels.
+void expect_correspondence_consistent(const SlicedSpace& space) {
+  ASSERT_EQ(space.correspondence.size(), space.slices.size());
+  for (size_t i = 0; i < space.correspondence.size(); ++i) {
+    const SliceCorrespondence& c = space.correspondence[i];
+    ASSERT_EQ(c.from, static_cast<int>(i));
+    ASSERT_EQ(c.to, static_cast<int>((i + 1) % space.slices.size()));
+    std::vector<SegmentLabel> from = c.kept, to = c.kept;
+    from.insert(from.end(), c.vanishing.begin(), c.vanishing.end());
+    to.insert(to.end(), c.appearing.begin(), c.appearing.end());
+    std::sort(from.begin(), from.end());
+    std::sort(to.begin(), to.end());
+    EXPECT_EQ(from, realizable_labels(space.slices[c.from].slice));
+    EXPECT_EQ(to, realizable_labels(space.slices[c.to].slice));
+  }
+}
+
+// The contact segments at theta by label, where the label makes exactly one.
+std::map<SegmentLabel, Curve> single_segments(const Pair& pair, double theta) {
+  std::map<SegmentLabel, Curve> out;
+  std::map<SegmentLabel, int> count;
+  for (const ContactSegment& s : contact_segments(pair, theta)) {
+    const SegmentLabel label{s.moving_feature, s.fixed_feature};
+    count[label] += 1;
+    out[label] = s.curve;
+  }
+  std::erase_if(out, [&](const auto& entry) { return count[entry.first] != 1; });
+  return out;
+}
+
+// Largest distance, at the middle of [a, b], between a defining point of a contact segment
+// and the average of its positions at a and b.
+double interpolation_error(const Pair& pair, double a, double b) {
+  const auto at_a = single_segments(pair, a), at_b = single_segments(pair, b);
+  double worst = 0.0;
+  for (const auto& [label, mid] : single_segments(pair, (a + b) / 2)) {
+    if (!at_a.count(label) || !at_b.count(label)) continue;
+    const Curve &ca = at_a.at(label), &cb = at_b.at(label);
+    if (mid.is_arc() != ca.is_arc() || mid.is_arc() != cb.is_arc()) continue;
+    const auto error = [](Vec2 p, Vec2 q, Vec2 m) { return distance(lerp(p, q, 0.5), m); };
+    if (mid.is_arc()) {
+      worst = std::max(worst, error(ca.center, cb.center, mid.center));
+    } else {
+      worst = std::max(worst, error(ca.from, cb.from, mid.from));
+      worst = std::max(worst, error(ca.to, cb.to, mid.to));
+    }
+  }
+  return worst;
+}
+
+SpaceOptions with_threads(int threads) {
+  SpaceOptions o;
+  o.threads = threads;
+  return o;
+}
+
+}  // namespace
+
+// ---- Library ----------------------------------------------------------------------------
+
+TEST(Space, InterpolationStepBoundsTheSagitta) {
+  const double reach = 2.5, tol = 1e-3;
+  const double step = interpolation_step(reach, tol);
+  EXPECT_DOUBLE_EQ(step, std::sqrt(8 * tol / reach));
+  // The exact sagitta of a point at the reach, turned by one step, is within the tolerance.
+  EXPECT_LE(reach * (1 - std::cos(step / 2)), tol);
+  EXPECT_DOUBLE_EQ(interpolation_step(0.0, tol), kPi / 2);
+  EXPECT_DOUBLE_EQ(interpolation_step(1e-9, 1.0), kPi / 2);
+}
+
+TEST(Space, PaperExamplesAreWellFormed) {
+  for (const char* name : kPaperExamples) {
+    const Pair pair = testkit::load_example(name);
+    const SlicedSpace space = compute_space(pair, with_threads(2));
+    expect_well_formed(space, name);
+    expect_correspondence_consistent(space);
+    EXPECT_GT(space.reach, 0.0) << name;
+    EXPECT_GE(space.seconds_criticals, 0.0);
+    EXPECT_GE(space.seconds_slices, 0.0);
+  }
+}
+
+// The bound itself, measured: halfway between two consecutive slices of an interval, the
+// defining points of every contact segment (a line's ends, an arc's centre) lie within the
+// tolerance of the average of their positions in the two slices.
+TEST(Space, InterpolationBetweenSlicesStaysWithinTheTolerance) {
+  for (const char* name : kPaperExamples) {
+    const Pair pair = testkit::load_example(name);
+    const SlicedSpace space = compute_space(pair);
+    double worst = 0.0;
+    for (size_t i = 0; i + 1 < space.slices.size(); ++i) {
+      const double a = space.slices[i].theta, b = space.slices[i + 1].theta;
+      worst = std::max(worst, interpolation_error(pair, a, b));
+    }
+    EXPECT_LE(worst, pair.tol.contact) << name;
+    EXPECT_GT(worst, pair.tol.contact / 100) << name << ": the bound is far from tight";
+  }
+}
+
+TEST(Space, SameJsonWhateverTheThreadCount) {
+  const Pair pair = testkit::load_example("knee");
+  const std::string one = space_to_json(pair, compute_space(pair, with_threads(1)), false);
+  const std::string two = space_to_json(pair, compute_space(pair, with_threads(2)), false);
+  EXPECT_EQ(one, two);
+  EXPECT_EQ(one.find("timing"), std::string::npos);
+}
+
+// A unit disc in the box [-3, 3]^2 (examples/disc-in-box.json, tolerance 0.001): turning a
+// disc about its centre changes nothing, so there is no critical orientation and no contact
+// point moves (reach 0): the slices are spaced evenly by the capped step, pi / 2, and each
+// has one free component, the square [-(s - r), s - r]^2 with s = 3, r = 1: area
+// (2 (s - r))^2 = 16.
+TEST(Space, DiscInBoxHasEvenlySpacedIdenticalSlices) {
+  const Pair pair = testkit::load_example("disc-in-box");
+  const SlicedSpace space = compute_space(pair);
+  EXPECT_TRUE(space.criticals.orientations.empty());
+  EXPECT_DOUBLE_EQ(space.reach, 0.0);
+  EXPECT_DOUBLE_EQ(space.max_step, kPi / 2);
+  expect_well_formed(space, "disc-in-box");
+  expect_correspondence_consistent(space);
+  const int expected = 4;
+  ASSERT_EQ(static_cast<int>(space.slices.size()), expected);
+  EXPECT_DOUBLE_EQ(space.slices.front().theta, -kPi);
+  const double s = 3.0, r = 1.0;
+  for (size_t i = 0; i < space.slices.size(); ++i) {
+    EXPECT_NEAR(gap_after(space, i), kTwoPi / expected, 1e-12);
+    const Slice& slice = space.slices[i].slice;
+    ASSERT_EQ(slice.free_components.size(), 1u) << "slice " << i;
+    EXPECT_TRUE(slice.free_components[0].bounded);
+    EXPECT_NEAR(slice.free_components[0].area, std::pow(2 * (s - r), 2), 1e-9);
+  }
+  for (const SliceCorrespondence& c : space.correspondence) {
+    EXPECT_EQ(c.kept.size(), 4u);  // the disc on each of the four walls, throughout
+    EXPECT_TRUE(c.appearing.empty());
+    EXPECT_TRUE(c.vanishing.empty());
+  }
+}
+
+// ---- The commands -----------------------------------------------------------------------
+
+class SpaceCli : public testkit::ScratchDirTest {
+ protected:
+  SpaceCli() : ScratchDirTest("cslice_space") {}
+
+  testkit::RunResult compute(const std::string& pair, const std::string& out,
+                             const std::string& extra = "") {
+    return testkit::run_cli("compute " + testkit::quoted(pair) + " -o " + testkit::quoted(out) +
+                                (extra.empty() ? "" : " " + extra),
+                            dir_);
+  }
+};
+
+TEST_F(SpaceCli, ComputeWritesAParseableVersionedFile) {
+  const std::string out = (dir_ / "space.json").string();
+  const testkit::RunResult r = compute(testkit::example_path("fastener"), out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(testkit::read_file(out));
+  EXPECT_EQ(j["format"], "cslice-space");
+  EXPECT_EQ(j["version"], 1);
+  EXPECT_EQ(j["pair"], "fastener");
+  ASSERT_TRUE(j["slices"].is_array());
+  EXPECT_EQ(j["slices"].size(), j["counts"]["slices"].get<size_t>());
+  EXPECT_EQ(j["correspondence"].size(), j["slices"].size());
+  EXPECT_GE(j["slices"].size(), 2 * j["critical_orientations"].size());
+  const nlohmann::json& first = j["slices"][0];
+  for (const char* field :
+       {"theta", "kind", "interval", "free_components", "bounded_free_components", "components",
+        "realizable_labels", "contact_graph_edges"})
+    EXPECT_TRUE(first.contains(field)) << field;
+  EXPECT_TRUE(j["timing"]["slices_seconds"].is_number());
+}
+
+TEST_F(SpaceCli, ThreadCountChangesOnlyTheTiming) {
+  const std::string a = (dir_ / "one.json").string(), b = (dir_ / "two.json").string();
+  ASSERT_EQ(compute(testkit::example_path("knee"), a, "--threads 1").status, 0);
+  ASSERT_EQ(compute(testkit::example_path("knee"), b, "--threads 2").status, 0);
+  nlohmann::json ja = nlohmann::json::parse(testkit::read_file(a));
+  nlohmann::json jb = nlohmann::json::parse(testkit::read_file(b));
+  ja.erase("timing");
+  jb.erase("timing");
+  EXPECT_EQ(ja.dump(), jb.dump());
+}
+
+TEST_F(SpaceCli, BadInputExitsTwoWithNoFile) {
+  testkit::write_file(dir_ / "bad.json", "{\"name\": 3");
+  const std::string out = (dir_ / "space.json").string();
+  const testkit::RunResult r = compute((dir_ / "bad.json").string(), out);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("bad.json"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  for (const auto& entry : std::filesystem::directory_iterator(dir_))
+    EXPECT_EQ(entry.path().filename().string().find("space.json"), std::string::npos);
+}
+
+TEST_F(SpaceCli, StatsPrintsOneMarkdownRowPerPair) {
+  const testkit::RunResult r =
+      testkit::run_cli("stats " + testkit::quoted(testkit::example_path("disc-in-box")) + " " +
+                           testkit::quoted(testkit::example_path("square-peg-hole")),
+                       dir_);
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::istringstream in(r.out);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 4u) << r.out;  // header, alignment row, one row per pair
+  EXPECT_EQ(lines[1].rfind("| :---", 0), 0u);
+  EXPECT_EQ(lines[2].rfind("| disc-in-box | 9 (1+8) | 0 (0) |", 0), 0u) << lines[2];
+  EXPECT_EQ(lines[3].rfind("| square-peg-hole |", 0), 0u) << lines[3];
+  const auto columns = [](const std::string& s) { return std::count(s.begin(), s.end(), '|'); };
+  for (const std::string& line : lines) EXPECT_EQ(columns(line), 9) << line;
+  EXPECT_NE(lines[2].find("| 1 (4 of 4 slices) |"), std::string::npos) << lines[2];
+}
+
+TEST_F(SpaceCli, StatsOnBadInputPrintsNothing) {
+  testkit::write_file(dir_ / "bad.json", "{\"name\": 3");
+  const testkit::RunResult r =
+      testkit::run_cli("stats " + testkit::quoted(testkit::example_path("cam")) + " " +
+                           testkit::quoted((dir_ / "bad.json").string()),
+                       dir_);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
