@@ -262,7 +262,7 @@ TEST_F(SpaceCli, StatsPrintsOneMarkdownRowPerPair) {
   EXPECT_EQ(lines[2].rfind("| disc-in-box | 9 (1+8) | 0 (0) |", 0), 0u) << lines[2];
   EXPECT_EQ(lines[3].rfind("| square-peg-hole |", 0), 0u) << lines[3];
   const auto columns = [](const std::string& s) { return std::count(s.begin(), s.end(), '|'); };
-  for (const std::string& line : lines) EXPECT_EQ(columns(line), 9) << line;
+  for (const std::string& line : lines) EXPECT_EQ(columns(line), 10) << line;
   EXPECT_NE(lines[2].find("| 1 (4 of 4 slices) |"), std::string::npos) << lines[2];
 }
 

@@ -6,6 +6,7 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "cslice/critical.hpp"
@@ -45,6 +46,96 @@ struct SliceCorrespondence {
   std::vector<SegmentLabel> kept, appearing, vanishing;  // each sorted
 };
 
+// ---- 3D topology (src/space/topology.cpp, docs/space-format.md) -------------------------
+
+// A free-space cell: an open interval between two consecutive critical orientations times
+// one free component of its slices, followed from slice to slice through the interval.
+struct SpaceCell {
+  int id = 0;
+  int interval = 0;
+  // The open interval (theta_from, theta_to); theta_to passes pi for the last interval, which
+  // wraps to the first critical orientation + 2 pi. With no critical orientation: (-pi, pi).
+  double theta_from = 0.0, theta_to = 0.0;
+  int component = 0;  // its 3D free component
+  bool bounded = true;
+  double min_area = 0.0, max_area = 0.0;  // over its slices; NaN when unbounded
+  // A free configuration of the cell: a component sample in the interval's representative
+  // slice (its middle), or in the slice nearest it when the cell is missing there.
+  double sample_theta = 0.0;
+  Vec2 sample;
+};
+
+// How the cells of the interval before one group of joined cells at a critical orientation
+// continue into the interval after it.
+enum class TransitionKind {
+  continues,    // one cell before, one after
+  merge,        // several before, one after
+  split,        // one before, several after
+  merge_split,  // several on both sides
+  appear,       // none before, one after
+  vanish,       // one before, none after
+};
+std::string_view to_string(TransitionKind k);
+
+struct TransitionEvent {
+  TransitionKind kind = TransitionKind::continues;
+  std::vector<int> before, after;        // cell ids, sorted
+  std::vector<int> critical_components;  // free components of the critical slice joined in
+};
+
+// The joins across one critical orientation, from the interval ending there to the one
+// starting there (the last interval before the first orientation, across theta = pi).
+struct CriticalTransition {
+  int critical = 0;  // index into criticals.orientations; its slice starts interval `critical`
+  double theta = 0.0;
+  int interval_before = 0, interval_after = 0;
+  // How far before and after theta the side slices lie (radians): side_slice_angle, or less
+  // when the interval's nearest stored slice is closer than that and serves instead.
+  double side_before = 0.0, side_after = 0.0;
+  std::vector<std::pair<int, int>> joins;  // (cell before, cell after), sorted
+  std::vector<TransitionEvent> events;     // ordered by their smallest cell
+  // Components of the critical slice that no cell reaches: a numerical problem (free space is
+  // open, so every free point at theta extends to both sides).
+  int orphan_critical_components = 0;
+};
+
+// A connected component of the 3D free space: a union of cells.
+struct SpaceComponent {
+  int id = 0;
+  std::vector<int> cells;  // sorted
+  // Maximal theta ranges it covers: runs of intervals joined through critical slices where it
+  // has free space. [-pi, pi] when it spans every orientation.
+  std::vector<std::pair<double, double>> theta_ranges;
+  bool spans_all_theta = false;  // a cell in every interval and free space at every critical
+};
+
+// Checks that should never fail; a count above zero is a bug (or a numerical problem)
+// reported, not hidden.
+struct TopologyChecks {
+  int interval_match_failures = 0;     // a component of one interval slice not found, both
+                                       // ways, in the next slice of the same interval
+  int boundary_label_mismatches = 0;   // matched components with different boundary labels
+  int side_slices_not_equivalent = 0;  // a side slice not equivalent to its interval's slices
+  int orphan_critical_components = 0;  // summed over the transitions
+  // Not a failure: extra slices that halved a gap whose components moved further than their
+  // samples' clearance between stored slices (then matched).
+  int refinement_slices = 0;
+  // Not a failure either: consecutive slices of an interval matched by their components'
+  // boundary labels (all distinct) where even refinement left samples unmatched.
+  int label_matches = 0;
+  std::vector<std::string> problems;  // the first few, in words
+};
+
+struct SpaceTopology {
+  std::vector<SpaceCell> cells;  // by interval, then by component of the representative slice
+  std::vector<CriticalTransition> transitions;  // one per critical orientation, by theta
+  std::vector<SpaceComponent> components;       // by their smallest cell
+  // Per slice of SlicedSpace::slices, per free component: its cell (-1 in critical slices),
+  // and its 3D component (-1 for an orphan component of a critical slice).
+  std::vector<std::vector<int>> slice_cells, slice_components;
+  TopologyChecks checks;
+};
+
 struct SpaceOptions {
   CriticalOptions critical;
   int threads = 0;  // slices computed at once; 0 lets oneTBB choose (every core)
@@ -58,6 +149,7 @@ struct SlicedSpace {
   double reach = 0.0;
   std::vector<SpaceSlice> slices;                   // sorted by theta
   std::vector<SliceCorrespondence> correspondence;  // slice i to slice (i + 1) mod n
+  SpaceTopology topology;                           // cells, transitions, 3D components
   // Wall-clock seconds: not part of the result, and the only thing that varies between runs.
   double seconds_criticals = 0.0;
   double seconds_slices = 0.0;
@@ -71,6 +163,16 @@ double contact_reach(const Pair& pair);
 double interpolation_step(double reach, double tolerance);
 
 SlicedSpace compute_space(const Pair& pair, const SpaceOptions& options = {});
+
+// The 3D topology of a space whose slices and criticals are computed: cells, their joins
+// across the critical orientations, the 3D free components. Computes two side slices per
+// critical orientation (in parallel, `threads` as in SpaceOptions) where the intervals' own
+// slices are further than side_slice_angle from it. compute_space calls it.
+SpaceTopology compute_topology(const Pair& pair, const SlicedSpace& space, int threads = 0);
+
+// The side-slice angle delta of the joins across a critical orientation: side slices lie at
+// most this far from it (src/space/topology.cpp explains the choice).
+double side_slice_angle(const Tolerances& tol);
 
 // The labels of the realizable contact segments of a slice, sorted and without repeats.
 std::vector<SegmentLabel> realizable_labels(const Slice& slice);

@@ -25,6 +25,14 @@ inline constexpr double kDefaultRelativeTolerance = 1e-3;
 // length.
 inline constexpr double kCriticalityPerGeometric = 1e3;
 
+// How far from a critical orientation the 3D topology takes its side slices, as the square of
+// the angle in angular tolerances (src/space/topology.cpp, side_slice_angle): at a tangency
+// two contact curves separate quadratically in the angle, so at delta = sqrt(1e3 angular)
+// they are a criticality tolerance (1e3 geometric epsilons at the pair's size) apart, enough
+// for the side slice to show the interval's topology rather than the critical one; at a
+// transversal crossing they are then sqrt(1e3 / angular) ~ 3e4 times further apart still.
+inline constexpr double kSideSliceAngleSquaredPerAngular = kCriticalityPerGeometric;
+
 struct Tolerances {
   // Length unit of the pair file (mm, in, ...). Base value everything scales with.
   double size = 1.0;

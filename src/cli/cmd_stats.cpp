@@ -35,6 +35,16 @@ std::string components_cell(const SlicedSpace& space) {
          std::to_string(space.slices.size()) + " slices)";
 }
 
+// "2 (1 spans every θ)": the connected components of the 3D free space, and how many of them
+// have free space at every orientation.
+std::string components_3d_cell(const SlicedSpace& space) {
+  const auto& comps = space.topology.components;
+  const auto spanning = std::count_if(comps.begin(), comps.end(),
+                                      [](const SpaceComponent& c) { return c.spans_all_theta; });
+  return std::to_string(comps.size()) + " (" + std::to_string(spanning) + " span" +
+         (spanning == 1 ? "s" : "") + " every θ)";
+}
+
 std::string row(const Pair& pair, const SlicedSpace& space) {
   const int moving = pair.moving.feature_count(), fixed = pair.fixed.feature_count();
   const std::vector<std::string> cells = {
@@ -47,7 +57,8 @@ std::string row(const Pair& pair, const SlicedSpace& space) {
       std::to_string(space.slices.size()),
       milliseconds(space.seconds_slices),
       milliseconds(space.seconds_criticals + space.seconds_slices),
-      components_cell(space)};
+      components_cell(space),
+      components_3d_cell(space)};
   std::string out = "|";
   for (const std::string& c : cells) out += " " + c + " |";
   return out + "\n";
@@ -62,8 +73,9 @@ void run(const StatsCommand& cmd) {
   options.threads = cmd.threads;
   std::string out =
       "| example | features (moving+fixed) | critical orientations (criticalities) | time, ms "
-      "| slices | time, ms | total time, ms | free components (slices with that many) |\n"
-      "| :--- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+      "| slices | time, ms | total time, ms | free components (slices with that many) "
+      "| 3D free components |\n"
+      "| :--- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
   for (const Pair& pair : pairs) out += row(pair, compute_space(pair, options));
   std::cout << out << std::flush;
 }
@@ -76,7 +88,8 @@ void register_stats(CLI::App& app) {
       "stats",
       "The paper's run-time table (Figure 8) for the given pairs, as Markdown: features,\n"
       "criticalities and the time to find them, slices and the time to compute them, total\n"
-      "time, and the most free components in a slice.");
+      "time, the most free components in a slice, and the connected components of the 3D free\n"
+      "space.");
   sub->add_option("pairs", cmd->pair_paths, "Pair files (JSON, see docs/pair-format.md)")
       ->required();
   sub->add_option("--threads", cmd->threads,

@@ -277,6 +277,10 @@ void real_roots(const Poly& p, double lo, double hi, double touch, std::vector<d
 // A harmonic this small relative to the largest coefficient is round-off left by a
 // cancellation (a few units in the last place of the terms that cancelled).
 constexpr double kCancelledHarmonic = 64.0 * std::numeric_limits<double>::epsilon();
+// A harmonic this small relative to the identically-zero threshold moves no root that
+// matters: products of rotating points make degree-6 triple equations whose top harmonics
+// cancel (rotation invariance) down to round-off of the summed terms, far below it.
+constexpr double kNegligibleOfZero = 1e-4;
 
 // A polishing step longer than this (radians) means Newton has left the root it started at
 // (the root found in t is far more accurate than that); the unpolished value is kept.
@@ -343,8 +347,9 @@ TrigRoots trig_roots(const Trig& raw, double zero_norm, double touch, double mer
   // Harmonics that cancelled down to round-off (cos^2 + sin^2 in |P + R Q|^2) would raise
   // the degree for nothing.
   Trig f = raw;
+  const double cancelled = std::max(kCancelledHarmonic * n, kNegligibleOfZero * zero_norm);
   for (int j = 1; j <= Trig::kMaxDegree; ++j)
-    if (harmonic_size(f, j) <= kCancelledHarmonic * n) f.a[j] = f.b[j] = 0.0;
+    if (harmonic_size(f, j) <= cancelled) f.a[j] = f.b[j] = 0.0;
   // No root when the constant term outweighs every harmonic together.
   double amplitude = 0.0;
   for (int j = 1; j <= Trig::kMaxDegree; ++j) amplitude += harmonic_size(f, j);

@@ -163,6 +163,7 @@ SlicedSpace compute_space(const Pair& pair, const SpaceOptions& options) {
   space.slices =
       compute_slices(pair, plan_slices(space.criticals, space.max_step), options.threads);
   space.correspondence = correspondences(space.slices);
+  space.topology = compute_topology(pair, space, options.threads);
   space.seconds_slices = seconds_since(start);
   return space;
 }

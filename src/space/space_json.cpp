@@ -1,5 +1,6 @@
 // The sliced space as JSON (docs/space-format.md): per slice a summary, not the whole slice
 // (`cslice slice` gives that), so the file stays small enough to read back quickly.
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -79,6 +80,75 @@ json counts_json(const SlicedSpace& space) {
           {"intermediate_slices", by_kind[2]}};
 }
 
+json cells_json(const std::vector<SpaceCell>& cells) {
+  json out = json::array();
+  for (const SpaceCell& c : cells)
+    out.push_back(
+        {{"id", c.id},
+         {"interval", c.interval},
+         {"theta_range", json::array({c.theta_from, c.theta_to})},
+         {"component", c.component},
+         {"bounded", c.bounded},
+         {"area_range", json::array({number_or_null(c.min_area), number_or_null(c.max_area)})},
+         {"sample", json::array({c.sample.x, c.sample.y, c.sample_theta})}});
+  return out;
+}
+
+json transitions_json(const std::vector<CriticalTransition>& list) {
+  json out = json::array();
+  for (const CriticalTransition& t : list) {
+    json joins = json::array(), events = json::array(), kinds = json::array();
+    for (const auto& [a, b] : t.joins) joins.push_back(json::array({a, b}));
+    std::vector<std::string> names;
+    for (const TransitionEvent& e : t.events) {
+      events.push_back({{"kind", to_string(e.kind)},
+                        {"before", e.before},
+                        {"after", e.after},
+                        {"critical_components", e.critical_components}});
+      names.emplace_back(to_string(e.kind));
+    }
+    std::sort(names.begin(), names.end());
+    names.erase(std::unique(names.begin(), names.end()), names.end());
+    for (const std::string& name : names) kinds.push_back(name);
+    out.push_back({{"critical", t.critical},
+                   {"theta", t.theta},
+                   {"interval_before", t.interval_before},
+                   {"interval_after", t.interval_after},
+                   {"side_angles", json::array({t.side_before, t.side_after})},
+                   {"kinds", std::move(kinds)},
+                   {"events", std::move(events)},
+                   {"joins", std::move(joins)},
+                   {"orphan_critical_components", t.orphan_critical_components}});
+  }
+  return out;
+}
+
+json topology_json(const SpaceTopology& topo) {
+  json components = json::array();
+  for (const SpaceComponent& c : topo.components) {
+    json ranges = json::array();
+    for (const auto& [from, to] : c.theta_ranges) ranges.push_back(json::array({from, to}));
+    components.push_back({{"id", c.id},
+                          {"cells", c.cells},
+                          {"spans_all_theta", c.spans_all_theta},
+                          {"theta_ranges", std::move(ranges)}});
+  }
+  const TopologyChecks& k = topo.checks;
+  return {{"free_components_3d", topo.components.size()},
+          {"cells", cells_json(topo.cells)},
+          {"transitions", transitions_json(topo.transitions)},
+          {"components", std::move(components)},
+          {"slice_components", topo.slice_components},
+          {"checks",
+           {{"interval_match_failures", k.interval_match_failures},
+            {"boundary_label_mismatches", k.boundary_label_mismatches},
+            {"side_slices_not_equivalent", k.side_slices_not_equivalent},
+            {"orphan_critical_components", k.orphan_critical_components},
+            {"refinement_slices", k.refinement_slices},
+            {"label_matches", k.label_matches},
+            {"problems", k.problems}}}};
+}
+
 }  // namespace
 
 std::string space_to_json(const Pair& pair, const SlicedSpace& space, bool with_timing) {
@@ -94,6 +164,7 @@ std::string space_to_json(const Pair& pair, const SlicedSpace& space, bool with_
               {"critical_orientations", criticals_json(space.criticals)},
               {"slices", json::array()},
               {"correspondence", correspondence_json(space.correspondence)},
+              {"topology", topology_json(space.topology)},
               {"counts", counts_json(space)}};
   for (const SpaceSlice& s : space.slices) out["slices"].push_back(slice_json(s));
   if (with_timing)

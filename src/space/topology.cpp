@@ -1,0 +1,584 @@
+// The 3D topology of the sliced space (paper sections 4 and 7): free-space cells (an open
+// interval between consecutive critical orientations times one free component of its
+// slices), how they join across each critical slice, and the connected components of the 3D
+// free space (docs/space-format.md, "topology").
+//
+// Cells are followed slice to slice inside an interval by locating each component's sample
+// in the neighbouring slice, both ways; the slices of an interval are equivalent, so any
+// failure is reported in TopologyChecks, never papered over. Across a critical orientation
+// theta_k the cells are joined through two side slices at theta_k -+ delta and the critical
+// slice itself (join rules in `transition` below).
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <numeric>
+
+#include "cslice/equivalence.hpp"
+#include "cslice/space.hpp"
+
+namespace cslice {
+
+namespace {
+
+constexpr size_t kMaxProblems = 20;  // problems kept in words; the counts keep the rest
+// Halvings of a gap between two slices of an interval whose components the samples do not
+// match: 4 shrinks the gap 16 times (the paper examples need at most 1); beyond that the
+// boundary labels decide (match_by_labels).
+constexpr int kMaxRefinement = 4;
+
+// Union-find whose root is always the smallest member, so results do not depend on the order
+// of the unions.
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a == b) return;
+    if (a < b) std::swap(a, b);
+    parent[a] = b;
+  }
+};
+
+// Angle from `start` forward to `theta`, in [0, 2 pi).
+double offset_from(double start, double theta) {
+  double d = std::fmod(theta - start, kTwoPi);
+  return d < 0 ? d + kTwoPi : d;
+}
+
+// Labels of the contact segments along a component's boundary, one per piece, sorted.
+std::vector<SegmentLabel> boundary_labels(const Slice& s, const FreeComponent& c) {
+  std::vector<SegmentLabel> out;
+  for (const auto& cycle : c.boundary)
+    for (const ContactPiece& piece : cycle) {
+      const ContactSegment& seg = s.contact_segments.at(piece.segment);
+      out.push_back({seg.moving_feature, seg.fixed_feature});
+    }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+int component_count(const Slice& s) {
+  return static_cast<int>(s.free_components.size());
+}
+
+class TopologyBuilder {
+ public:
+  TopologyBuilder(const Pair& pair, const SlicedSpace& space, int threads)
+      : pair_(pair), space_(space), threads_(threads) {}
+
+  SpaceTopology build() {
+    plan_intervals();
+    compute_side_slices();
+    build_chains();
+    build_cells();
+    UnionFind components(static_cast<int>(topo_.cells.size()));
+    for (int k = 0; k < static_cast<int>(criticals_.size()); ++k) transition(k, components);
+    build_components(components);
+    return std::move(topo_);
+  }
+
+ private:
+  // One slice of an interval's chain: a stored slice or a side slice.
+  struct Link {
+    const Slice* slice = nullptr;
+    int stored = -1;     // index into space.slices, or -1 for a side slice
+    int first_node = 0;  // node of its component 0
+  };
+
+  void problem(const std::string& text) {
+    if (topo_.checks.problems.size() < kMaxProblems) topo_.checks.problems.push_back(text);
+  }
+
+  void plan_intervals() {
+    for (const CriticalOrientation& o : space_.criticals.orientations)
+      criticals_.push_back(o.theta);
+    starts_ = criticals_;
+    if (starts_.empty()) starts_.push_back(-kPi);
+    const int n = static_cast<int>(starts_.size());
+    for (int i = 0; i < n; ++i)
+      ends_.push_back(i + 1 < n ? starts_[i + 1] : starts_.front() + kTwoPi);
+    stored_.assign(n, {});
+    critical_slice_.assign(criticals_.size(), -1);
+    representative_.assign(n, -1);
+    for (int s = 0; s < static_cast<int>(space_.slices.size()); ++s) {
+      const SpaceSlice& slice = space_.slices[s];
+      if (slice.kind == SliceKind::critical && !criticals_.empty()) {
+        critical_slice_.at(slice.interval) = s;
+        continue;
+      }
+      stored_.at(slice.interval).push_back(s);
+      if (slice.kind == SliceKind::interval) representative_[slice.interval] = s;
+    }
+    for (int i = 0; i < n; ++i)
+      std::stable_sort(stored_[i].begin(), stored_[i].end(), [&](int a, int b) {
+        return offset_from(starts_[i], space_.slices[a].theta) <
+               offset_from(starts_[i], space_.slices[b].theta);
+      });
+  }
+
+  // The side slices of each critical orientation, before and after it: the interval's
+  // nearest stored slice when it lies within the side angle delta (always so for an interval
+  // narrower than 2 delta, whose middle slice is then used), otherwise an extra slice at
+  // theta_k -+ delta. Extra ones are computed in parallel and stored by index: the same
+  // whatever the thread count.
+  void compute_side_slices() {
+    const int n = static_cast<int>(criticals_.size());
+    const double delta = side_slice_angle(pair_.tol);
+    std::vector<double> thetas(2 * n);
+    side_angles_.assign(2 * n, 0.0);
+    has_side_.assign(2 * n, 0);
+    for (int k = 0; k < n; ++k) {
+      const int before = (k + n - 1) % n;
+      const double gap_before =
+          offset_from(space_.slices[stored_[before].back()].theta, criticals_[k]);
+      const double gap_after = offset_from(criticals_[k], space_.slices[stored_[k].front()].theta);
+      side_angles_[2 * k] = std::min(gap_before, delta);
+      side_angles_[2 * k + 1] = std::min(gap_after, delta);
+      has_side_[2 * k] = gap_before > delta;
+      has_side_[2 * k + 1] = gap_after > delta;
+      thetas[2 * k] = wrap_angle(criticals_[k] - delta);
+      thetas[2 * k + 1] = wrap_angle(criticals_[k] + delta);
+    }
+    sides_.resize(thetas.size());
+    tbb::task_arena arena(threads_ > 0 ? threads_ : tbb::task_arena::automatic);
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, thetas.size(), 1), [&](const auto& r) {
+        for (size_t i = r.begin(); i != r.end(); ++i)
+          if (has_side_[i]) sides_[i] = compute_slice(pair_, thetas[i]);
+      });
+    });
+  }
+
+  // Each interval's slices in theta order: the side slice after its starting critical
+  // orientation, its stored slices, the side slice before its ending one.
+  void build_chains() {
+    const int n = static_cast<int>(starts_.size());
+    const int crit = static_cast<int>(criticals_.size());
+    chains_.assign(n, {});
+    int nodes = 0;
+    const auto add = [&](int i, const Slice* s, int stored) {
+      chains_[i].push_back({s, stored, nodes});
+      nodes += component_count(*s);
+    };
+    for (int i = 0; i < n; ++i) {
+      if (crit > 0 && has_side_[2 * i + 1]) add(i, &sides_[2 * i + 1], -1);
+      for (int s : stored_[i]) add(i, &space_.slices[s].slice, s);
+      if (crit > 0 && has_side_[2 * ((i + 1) % crit)]) add(i, &sides_[2 * ((i + 1) % crit)], -2);
+    }
+    nodes_ = UnionFind(nodes);
+    refined_links_.assign(n, {});
+    for (int i = 0; i < n; ++i) {
+      const std::vector<Link>& chain = chains_[i];
+      for (size_t j = 0; j + 1 < chain.size(); ++j) match(i, chain[j], chain[j + 1]);
+      // With no critical orientation the one interval is the whole turn: close it at pi.
+      if (crit == 0 && chain.size() > 1) match(i, chain.back(), chain.front());
+      if (crit > 0 && representative_[i] >= 0)
+        for (const Link& side : {chain.front(), chain.back()}) {
+          if (side.stored >= 0) continue;
+          const EquivalenceResult e =
+              slices_equivalent(*side.slice, space_.slices[representative_[i]].slice);
+          if (!e.equivalent) {
+            topo_.checks.side_slices_not_equivalent += 1;
+            problem("interval " + std::to_string(i) + ": side slice at theta " +
+                    std::to_string(side.slice->theta) +
+                    " not equivalent to the representative: " + e.difference);
+          }
+        }
+    }
+  }
+
+  // Matches the components of two consecutive slices of one interval: each one's sample
+  // located in the other slice, both ways, must give one bijection, and matched components
+  // must have the same boundary labels. A component may move further than its own width
+  // between stored slices (the cam's 0.2-wide channel turns by ~0.1 per step), so when the
+  // samples do not match, the gap is halved with an extra slice, up to kMaxRefinement times;
+  // only a gap still unmatched after that is a failure.
+  void match(int interval, const Link& a, const Link& b, int depth = 0) {
+    const Slice &sa = *a.slice, &sb = *b.slice;
+    const int na = component_count(sa), nb = component_count(sb);
+    std::vector<int> forward(na), backward(nb);
+    for (int c = 0; c < na; ++c) forward[c] = sb.locate(sa.free_components[c].sample);
+    for (int c = 0; c < nb; ++c) backward[c] = sa.locate(sb.free_components[c].sample);
+    bool ok = na == nb;
+    for (int c = 0; c < na && ok; ++c) ok = forward[c] >= 0 && backward[forward[c]] == c;
+    for (int c = 0; c < nb && ok; ++c) ok = backward[c] >= 0 && forward[backward[c]] == c;
+    if (!ok && depth < kMaxRefinement) {
+      const Link mid = refine(interval, a, b);
+      match(interval, a, mid, depth + 1);
+      match(interval, mid, b, depth + 1);
+      return;
+    }
+    if (!ok && match_by_labels(a, b, forward, backward)) return;
+    // Unmatched after refinement: keep what the samples say, and report it.
+    for (int c = 0; c < na; ++c)
+      if (forward[c] >= 0) nodes_.unite(a.first_node + c, b.first_node + forward[c]);
+    for (int c = 0; c < nb; ++c)
+      if (backward[c] >= 0) nodes_.unite(b.first_node + c, a.first_node + backward[c]);
+    if (!ok) {
+      topo_.checks.interval_match_failures += 1;
+      problem("interval " + std::to_string(interval) + ": components of the slices at theta " +
+              std::to_string(sa.theta) + " (" + std::to_string(na) + ") and " +
+              std::to_string(sb.theta) + " (" + std::to_string(nb) +
+              ") do not match one to one by their samples");
+    }
+    for (int c = 0; c < na; ++c) {
+      const int d = forward[c];
+      if (d < 0 || backward[d] != c) continue;
+      if (boundary_labels(sa, sa.free_components[c]) !=
+          boundary_labels(sb, sb.free_components[d])) {
+        topo_.checks.boundary_label_mismatches += 1;
+        problem("interval " + std::to_string(interval) + ": component " + std::to_string(c) +
+                " at theta " + std::to_string(sa.theta) + " and its match " + std::to_string(d) +
+                " at theta " + std::to_string(sb.theta) + " have different boundary labels");
+      }
+    }
+  }
+
+  // The last resort for components too small for their samples to be found in the
+  // neighbouring slice however close (a sliver shrinking towards a critical orientation):
+  // the slices are equivalent, so when every component's boundary labels are distinct
+  // within each slice, equal labels give the one bijection. It must agree with every pair
+  // the samples did match both ways.
+  bool match_by_labels(const Link& a, const Link& b, const std::vector<int>& forward,
+                       const std::vector<int>& backward) {
+    const Slice &sa = *a.slice, &sb = *b.slice;
+    const int na = component_count(sa), nb = component_count(sb);
+    if (na != nb) return false;
+    std::vector<std::pair<std::vector<SegmentLabel>, int>> la, lb;
+    for (int c = 0; c < na; ++c) la.emplace_back(boundary_labels(sa, sa.free_components[c]), c);
+    for (int c = 0; c < nb; ++c) lb.emplace_back(boundary_labels(sb, sb.free_components[c]), c);
+    std::sort(la.begin(), la.end());
+    std::sort(lb.begin(), lb.end());
+    std::vector<int> partner(na, -1);
+    for (int i = 0; i < na; ++i) {
+      if (la[i].first != lb[i].first) return false;
+      if (i + 1 < na && la[i].first == la[i + 1].first) return false;
+      partner[la[i].second] = lb[i].second;
+    }
+    for (int c = 0; c < na; ++c)
+      if (forward[c] >= 0 && backward[forward[c]] == c && partner[c] != forward[c]) return false;
+    for (int c = 0; c < na; ++c) nodes_.unite(a.first_node + c, b.first_node + partner[c]);
+    topo_.checks.label_matches += 1;
+    return true;
+  }
+
+  // An extra slice halfway from a to b (forward, across pi if need be), with its own nodes.
+  Link refine(int interval, const Link& a, const Link& b) {
+    const double theta =
+        wrap_angle(a.slice->theta + offset_from(a.slice->theta, b.slice->theta) / 2);
+    refined_.push_back(compute_slice(pair_, theta));
+    topo_.checks.refinement_slices += 1;
+    const Link link{&refined_.back(), -1, static_cast<int>(nodes_.parent.size())};
+    for (int c = 0; c < component_count(refined_.back()); ++c)
+      nodes_.parent.push_back(static_cast<int>(nodes_.parent.size()));
+    refined_links_[interval].push_back(link);
+    return link;
+  }
+
+  // Cells: the classes of matched components within each interval, numbered by interval,
+  // then by component of the representative slice, then by first appearance along the chain.
+  void build_cells() {
+    const int n = static_cast<int>(starts_.size());
+    node_cell_.assign(nodes_.parent.size(), -1);
+    topo_.slice_cells.assign(space_.slices.size(), {});
+    for (int i = 0; i < n; ++i) {
+      std::vector<int> order;  // chain positions: the representative first
+      const double middle = (ends_[i] - starts_[i]) / 2;
+      for (int j = 0; j < static_cast<int>(chains_[i].size()); ++j) order.push_back(j);
+      std::stable_sort(order.begin(), order.end(), [&](int x, int y) {
+        return std::abs(offset(i, x) - middle) < std::abs(offset(i, y) - middle);
+      });
+      std::vector<Link> links;  // the chain, nearest the middle first, then refinements
+      for (int j : order) links.push_back(chains_[i][j]);
+      links.insert(links.end(), refined_links_[i].begin(), refined_links_[i].end());
+      std::vector<int> root_cell(nodes_.parent.size(), -1);
+      for (const Link& link : links) {
+        for (int c = 0; c < component_count(*link.slice); ++c) {
+          const int root = nodes_.find(link.first_node + c);
+          if (root_cell[root] < 0) root_cell[root] = new_cell(i, *link.slice, c);
+          const int cell = root_cell[root];
+          node_cell_[link.first_node + c] = cell;
+          add_area(topo_.cells[cell], link.slice->free_components[c]);
+        }
+      }
+      for (const Link& link : chains_[i]) {
+        if (link.stored < 0) continue;
+        std::vector<int>& cells = topo_.slice_cells[link.stored];
+        for (int c = 0; c < component_count(*link.slice); ++c)
+          cells.push_back(node_cell_[link.first_node + c]);
+      }
+    }
+  }
+
+  double offset(int interval, int position) const {
+    return offset_from(starts_[interval], chains_[interval][position].slice->theta);
+  }
+
+  int new_cell(int interval, const Slice& s, int component) {
+    SpaceCell cell;
+    cell.id = static_cast<int>(topo_.cells.size());
+    cell.interval = interval;
+    cell.theta_from = starts_[interval];
+    cell.theta_to = ends_[interval];
+    cell.sample_theta = s.theta;
+    cell.sample = s.free_components[component].sample;
+    cell.min_area = std::numeric_limits<double>::infinity();
+    cell.max_area = -std::numeric_limits<double>::infinity();
+    topo_.cells.push_back(cell);
+    return cell.id;
+  }
+
+  static void add_area(SpaceCell& cell, const FreeComponent& c) {
+    if (!c.bounded || !cell.bounded) {
+      cell.bounded = false;
+      cell.min_area = cell.max_area = std::numeric_limits<double>::quiet_NaN();
+      return;
+    }
+    cell.min_area = std::min(cell.min_area, c.area);
+    cell.max_area = std::max(cell.max_area, c.area);
+  }
+
+  // Joins across critical orientation k, from the interval before (ending at the side slice
+  // at theta_k - delta) to the interval after (starting at theta_k + delta). With A a
+  // component of the slice before, B of the slice after and C of the critical slice, and a
+  // sample "in" a component when Slice::locate puts it there:
+  //   A ~ C when A's sample is in C, or C's sample is in A at theta_k - delta;
+  //   B ~ C likewise at theta_k + delta;
+  //   A ~ B when A's sample is in B and also free at theta_k (in some C), or B's sample is
+  //   in A and free at theta_k.
+  // A sample free at both sides and at theta_k itself marks a free vertical segment (up to a
+  // motion of reach * delta, far below the samples' clearance); requiring theta_k as well
+  // keeps a component pinched to a point at theta_k (a perfect fit) from being joined
+  // across it. The classes of ~ are the events; their cells are one 3D component.
+  void transition(int k, UnionFind& components) {
+    const int n = static_cast<int>(criticals_.size());
+    const int before = (k + n - 1) % n, after = k;
+    const Link &lb = chains_[before].back(), &la = chains_[after].front();
+    const Slice &sb = *lb.slice, &sa = *la.slice;
+    const Slice& sc = space_.slices.at(critical_slice_[k]).slice;
+    const int nb = component_count(sb), na = component_count(sa), nc = component_count(sc);
+    // Elements: before components [0, nb), after [nb, nb + na), critical [nb + na, ...).
+    UnionFind local(nb + na + nc);
+    const int B0 = nb, C0 = nb + na;
+    for (int a = 0; a < nb; ++a) {
+      const Vec2 p = sb.free_components[a].sample;
+      const int c = sc.locate(p), b = sa.locate(p);
+      if (c >= 0) local.unite(a, C0 + c);
+      if (c >= 0 && b >= 0) local.unite(a, B0 + b);
+    }
+    for (int b = 0; b < na; ++b) {
+      const Vec2 p = sa.free_components[b].sample;
+      const int c = sc.locate(p), a = sb.locate(p);
+      if (c >= 0) local.unite(B0 + b, C0 + c);
+      if (c >= 0 && a >= 0) local.unite(B0 + b, a);
+    }
+    for (int c = 0; c < nc; ++c) {
+      const Vec2 p = sc.free_components[c].sample;
+      const int a = sb.locate(p), b = sa.locate(p);
+      if (a >= 0) local.unite(C0 + c, a);
+      if (b >= 0) local.unite(C0 + c, B0 + b);
+    }
+    // Components of one cell are one (they differ only after a reported match failure).
+    for (int x = 0; x < nb; ++x)
+      for (int y = x + 1; y < nb; ++y)
+        if (cell_of(lb, x) == cell_of(lb, y)) local.unite(x, y);
+    for (int x = 0; x < na; ++x)
+      for (int y = x + 1; y < na; ++y)
+        if (cell_of(la, x) == cell_of(la, y)) local.unite(B0 + x, B0 + y);
+
+    CriticalTransition t;
+    t.critical = k;
+    t.theta = criticals_[k];
+    t.interval_before = before;
+    t.interval_after = after;
+    t.side_before = side_angles_[2 * k];
+    t.side_after = side_angles_[2 * k + 1];
+    std::vector<int> event_of(nb + na + nc, -1);
+    for (int x = 0; x < nb + na + nc; ++x) {
+      const int root = local.find(x);
+      if (event_of[root] < 0) {
+        event_of[root] = static_cast<int>(t.events.size());
+        t.events.emplace_back();
+      }
+      TransitionEvent& e = t.events[event_of[root]];
+      if (x < B0)
+        e.before.push_back(cell_of(lb, x));
+      else if (x < C0)
+        e.after.push_back(cell_of(la, x - B0));
+      else
+        e.critical_components.push_back(x - C0);
+    }
+    critical_event_.emplace_back(nc, -1);
+    std::vector<TransitionEvent> events;
+    for (TransitionEvent& e : t.events) {
+      for (auto* v : {&e.before, &e.after}) {
+        std::sort(v->begin(), v->end());
+        v->erase(std::unique(v->begin(), v->end()), v->end());
+      }
+      if (e.before.empty() && e.after.empty()) {
+        t.orphan_critical_components += static_cast<int>(e.critical_components.size());
+        problem("critical orientation " + std::to_string(k) + " (theta " + std::to_string(t.theta) +
+                "): a free component of its slice reaches no cell");
+        continue;
+      }
+      e.kind = classify_event(e);
+      for (int before_cell : e.before)
+        for (int after_cell : e.after) t.joins.emplace_back(before_cell, after_cell);
+      const std::vector<int>& any = e.before.empty() ? e.after : e.before;
+      for (int cell : e.before) components.unite(cell, any.front());
+      for (int cell : e.after) components.unite(cell, any.front());
+      for (int c : e.critical_components) critical_event_.back()[c] = any.front();
+      events.push_back(std::move(e));
+    }
+    const auto smallest = [](const TransitionEvent& e) {
+      const int b = e.before.empty() ? std::numeric_limits<int>::max() : e.before.front();
+      const int a = e.after.empty() ? std::numeric_limits<int>::max() : e.after.front();
+      return std::min(a, b);
+    };
+    std::stable_sort(events.begin(), events.end(),
+                     [&](const auto& x, const auto& y) { return smallest(x) < smallest(y); });
+    t.events = std::move(events);
+    std::sort(t.joins.begin(), t.joins.end());
+    topo_.checks.orphan_critical_components += t.orphan_critical_components;
+    topo_.transitions.push_back(std::move(t));
+  }
+
+  int cell_of(const Link& link, int component) const {
+    return node_cell_[link.first_node + component];
+  }
+
+  static TransitionKind classify_event(const TransitionEvent& e) {
+    const size_t b = e.before.size(), a = e.after.size();
+    if (b == 0) return TransitionKind::appear;
+    if (a == 0) return TransitionKind::vanish;
+    if (b == 1 && a == 1) return TransitionKind::continues;
+    if (a == 1) return TransitionKind::merge;
+    if (b == 1) return TransitionKind::split;
+    return TransitionKind::merge_split;
+  }
+
+  void build_components(UnionFind& uf) {
+    const int cells = static_cast<int>(topo_.cells.size());
+    std::vector<int> id_of_root(cells, -1);
+    for (int c = 0; c < cells; ++c) {
+      const int root = uf.find(c);
+      if (id_of_root[root] < 0) {
+        id_of_root[root] = static_cast<int>(topo_.components.size());
+        topo_.components.emplace_back();
+        topo_.components.back().id = id_of_root[root];
+      }
+      topo_.cells[c].component = id_of_root[root];
+      topo_.components[id_of_root[root]].cells.push_back(c);
+    }
+    topo_.slice_components.assign(space_.slices.size(), {});
+    for (size_t s = 0; s < space_.slices.size(); ++s)
+      for (int cell : topo_.slice_cells[s])
+        topo_.slice_components[s].push_back(cell < 0 ? -1 : topo_.cells[cell].component);
+    for (size_t k = 0; k < criticals_.size(); ++k) {
+      std::vector<int>& comps = topo_.slice_components.at(critical_slice_[k]);
+      topo_.slice_cells.at(critical_slice_[k]).assign(critical_event_[k].size(), -1);
+      for (int cell : critical_event_[k])
+        comps.push_back(cell < 0 ? -1 : topo_.cells[cell].component);
+    }
+    for (SpaceComponent& comp : topo_.components) coverage(comp);
+  }
+
+  // Which intervals and critical orientations the component has free space in, as maximal
+  // theta ranges.
+  void coverage(SpaceComponent& comp) const {
+    const int n = static_cast<int>(starts_.size());
+    const int crit = static_cast<int>(criticals_.size());
+    std::vector<char> interval(n, 0), critical(crit, 0);
+    for (int cell : comp.cells) interval[topo_.cells[cell].interval] = 1;
+    for (int k = 0; k < crit; ++k)
+      for (int cell : critical_event_[k])
+        if (cell >= 0 && topo_.cells[cell].component == comp.id) critical[k] = 1;
+    comp.spans_all_theta =
+        std::all_of(interval.begin(), interval.end(), [](char c) { return c; }) &&
+        std::all_of(critical.begin(), critical.end(), [](char c) { return c; });
+    if (comp.spans_all_theta) {
+      comp.theta_ranges = {{-kPi, kPi}};
+      return;
+    }
+    // Interval i continues into i + 1 when both are covered and so is critical i + 1.
+    const auto joined = [&](int i) {
+      const int next = (i + 1) % n;
+      return crit > 0 && interval[i] && interval[next] && critical[next];
+    };
+    int first = -1;  // an interval that starts a run
+    for (int i = 0; i < n && first < 0; ++i)
+      if (interval[i] && !joined((i + n - 1) % n)) first = i;
+    if (first < 0) return;  // cannot happen: not spanning, so some run has a start
+    for (int step = 0; step < n; ++step) {
+      const int i = (first + step) % n;
+      if (!interval[i] || (step > 0 && joined((i + n - 1) % n))) continue;
+      int j = i;
+      while (joined(j)) j = (j + 1) % n;
+      const double from = starts_[i];
+      const double to = from + offset_from(starts_[i], starts_[j]) + (ends_[j] - starts_[j]);
+      comp.theta_ranges.emplace_back(from, to);
+    }
+  }
+
+  const Pair& pair_;
+  const SlicedSpace& space_;
+  int threads_;
+  std::vector<double> criticals_, starts_, ends_, side_angles_;
+  std::vector<char> has_side_;            // 2k: an extra slice before critical k; 2k + 1: after it
+  std::vector<std::vector<int>> stored_;  // per interval: its non-critical slices, by theta
+  std::vector<int> critical_slice_, representative_;
+  std::vector<Slice> sides_;  // 2k: before critical k, 2k + 1: after it
+  std::vector<std::vector<Link>> chains_;
+  std::deque<Slice> refined_;  // extra slices halving unmatched gaps (stable addresses)
+  std::vector<std::vector<Link>> refined_links_;  // per interval
+  UnionFind nodes_{0};
+  std::vector<int> node_cell_;
+  std::vector<std::vector<int>> critical_event_;  // per critical slice component: a cell
+  SpaceTopology topo_;
+};
+
+}  // namespace
+
+std::string_view to_string(TransitionKind k) {
+  switch (k) {
+    case TransitionKind::continues:
+      return "continue";
+    case TransitionKind::merge:
+      return "merge";
+    case TransitionKind::split:
+      return "split";
+    case TransitionKind::merge_split:
+      return "merge_split";
+    case TransitionKind::appear:
+      return "appear";
+    case TransitionKind::vanish:
+      return "vanish";
+  }
+  return "unknown";
+}
+
+// delta = sqrt(kSideSliceAngleSquaredPerAngular * angular) (tolerance.hpp: at a tangency
+// the curves are then a criticality tolerance apart, so the side slice shows the interval's
+// topology, not the critical one), about 1e-3 rad: small enough that no point of a contact
+// curve moves more than reach * delta (about a thousandth of the pair's size) between a side
+// slice and the critical one, far below the clearance of a component's sample. Far above the
+// critical angle (1e3 angular tolerances), within which criticalities are one orientation.
+double side_slice_angle(const Tolerances& tol) {
+  return std::sqrt(kSideSliceAngleSquaredPerAngular * tol.angular);
+}
+
+SpaceTopology compute_topology(const Pair& pair, const SlicedSpace& space, int threads) {
+  return TopologyBuilder(pair, space, threads).build();
+}
+
+}  // namespace cslice
