@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The main job on the bundled examples: installs dependencies (as root), builds cslice, and
 # writes for every example its description (info), a picture of the placed pair and of its
-# configuration-space slice, its critical orientations and its sliced configuration space into
-# out/, then the paper's run-time table (out/stats.md).
+# configuration-space slice, its critical orientations, its sliced configuration space, the
+# analysis of it and its contact-surface mesh into out/, then the paper's run-time table
+# (out/stats.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -27,7 +28,9 @@ for pair in examples/*.json; do
   "$cslice" critical "$pair" --json "out/$name-critical.json"
   "$cslice" critical "$pair" | tail -8
   "$cslice" compute "$pair" -o "out/$name-space.json"
-  echo "   pictures: out/$name.svg, out/$name-slice.svg; data: out/$name-{slice,critical,space}.json"
+  "$cslice" analyze "out/$name-space.json" > "out/$name-analysis.txt"
+  "$cslice" mesh "out/$name-space.json" -o "out/$name-contact.ply"
+  echo "   pictures: out/$name.svg, out/$name-slice.svg; data: out/$name-{slice,critical,space}.json, out/$name-analysis.txt, out/$name-contact.ply"
 done
 echo "== run-time table (the paper's Figure 8, measured here)"
 "$cslice" stats examples/knee.json examples/cam.json examples/fixture.json examples/fastener.json \

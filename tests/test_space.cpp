@@ -212,7 +212,7 @@ TEST_F(SpaceCli, ComputeWritesAParseableVersionedFile) {
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(testkit::read_file(out));
   EXPECT_EQ(j["format"], "cslice-space");
-  EXPECT_EQ(j["version"], 1);
+  EXPECT_EQ(j["version"], kSpaceFormatVersion);
   EXPECT_EQ(j["pair"], "fastener");
   ASSERT_TRUE(j["slices"].is_array());
   EXPECT_EQ(j["slices"].size(), j["counts"]["slices"].get<size_t>());

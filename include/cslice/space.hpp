@@ -4,6 +4,7 @@
 // between neighbours stays within the pair's contact tolerance (docs/space-format.md).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -177,8 +178,39 @@ double side_slice_angle(const Tolerances& tol);
 // The labels of the realizable contact segments of a slice, sorted and without repeats.
 std::vector<SegmentLabel> realizable_labels(const Slice& slice);
 
-// The space as JSON text (format "cslice-space", version 1; docs/space-format.md), ending in
-// a newline. Without timing the text depends only on the pair and the options' screening.
+// The version of the space file format that space_to_json writes and load_space reads.
+inline constexpr int kSpaceFormatVersion = 2;
+
+// The space as JSON text (format "cslice-space", version kSpaceFormatVersion;
+// docs/space-format.md), ending in a newline. It embeds the pair (pair_file_text) so the file
+// is self-contained. Without timing the text depends only on the pair and the options'
+// screening.
 std::string space_to_json(const Pair& pair, const SlicedSpace& space, bool with_timing = true);
+
+// The pair in the pair-file format (docs/pair-format.md), as a space file embeds it: its
+// validated loops as the file listed them (same order, orientation, vertices and bulges, bit
+// for bit), so parse_pair on this text gives the same pair, features numbered alike.
+std::string pair_file_text(const Pair& pair);
+
+// ---- Reading a space file back (src/space/space_reader.cpp) ------------------------------
+
+struct LoadSpaceResult {
+  std::optional<Pair> pair;          // rebuilt from the embedded pair
+  std::optional<SlicedSpace> space;  // slices recomputed at the stored orientations
+  std::optional<InputError> error;   // why not, naming the file and the field
+  bool ok() const { return space.has_value() && pair.has_value(); }
+};
+
+// Reads a space file written by `cslice compute` (space_to_json): checks its format and
+// version, rebuilds the embedded pair, recomputes the critical orientations, checks that
+// they and the slice orientations are the ones the file lists, recomputes every slice at its
+// stored orientation (in parallel, `threads` as in SpaceOptions), the correspondence and the
+// topology, and checks the recomputed summaries against the stored ones (free and bounded
+// component counts and areas per slice, 3D components and cells). Any difference is an
+// error, never silently accepted: the file was edited, truncated or written by another
+// version of the program. Timing is taken from the file when present.
+LoadSpaceResult load_space(const std::string& path, int threads = 0);
+// The same from the file's text; `source` names it in errors.
+LoadSpaceResult parse_space(std::string_view json_text, std::string_view source, int threads = 0);
 
 }  // namespace cslice

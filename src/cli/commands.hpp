@@ -37,6 +37,11 @@ Pose parse_pose_or_exit(const std::string& text, const std::string& what);
 // Parses "x,y" or throws ExitError(2) naming `what`. Like a pose, commas or spaces separate.
 Vec2 parse_point_or_exit(const std::string& text, const std::string& what);
 
+// Parses "X0,Y0,X1,Y1" (X0 < X1, Y0 < Y1) or throws ExitError(2) naming `what`.
+Box parse_box_or_exit(const std::string& text, const std::string& what);
+// Parses "A,B" (two finite numbers) or throws ExitError(2) naming `what`.
+std::pair<double, double> parse_range_or_exit(const std::string& text, const std::string& what);
+
 // Numbers as the commands print them: six significant digits (printf's %g).
 std::string format_number(double v);
 // "(x, y)".
@@ -50,7 +55,9 @@ void register_render(CLI::App& app);
 void register_equivalent(CLI::App& app);
 void register_slice(CLI::App& app);
 void register_critical(CLI::App& app);
+void register_mesh(CLI::App& app);
 void register_compute(CLI::App& app);
 void register_stats(CLI::App& app);
+void register_analyze(CLI::App& app);
 
 }  // namespace cslice::cli

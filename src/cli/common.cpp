@@ -46,6 +46,24 @@ Vec2 parse_point_or_exit(const std::string& text, const std::string& what) {
   return p;
 }
 
+Box parse_box_or_exit(const std::string& text, const std::string& what) {
+  double x0, y0, x1, y1;
+  if (!read_finite_numbers(text, {&x0, &y0, &x1, &y1}) || x0 >= x1 || y0 >= y1)
+    throw ExitError(kExitBadInput,
+                    what + ": expected X0,Y0,X1,Y1 with X0 < X1 and Y0 < Y1, got '" + text + "'");
+  Box box;
+  box.add(Vec2{x0, y0});
+  box.add(Vec2{x1, y1});
+  return box;
+}
+
+std::pair<double, double> parse_range_or_exit(const std::string& text, const std::string& what) {
+  double a, b;
+  if (!read_finite_numbers(text, {&a, &b}))
+    throw ExitError(kExitBadInput, what + ": expected two finite angles A,B, got '" + text + "'");
+  return {a, b};
+}
+
 std::string format_number(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.6g", v);

@@ -15,8 +15,10 @@ int main(int argc, char** argv) {
   cslice::cli::register_equivalent(app);
   cslice::cli::register_slice(app);
   cslice::cli::register_critical(app);
+  cslice::cli::register_mesh(app);
   cslice::cli::register_compute(app);
   cslice::cli::register_stats(app);
+  cslice::cli::register_analyze(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -13,17 +13,13 @@
 
 #include "criticals/families.hpp"
 #include "cslice/slice_io.hpp"
+#include "space/space_build.hpp"
 
 namespace cslice {
 
 namespace {
 
-// An orientation to slice at, before the slice is computed.
-struct Planned {
-  double theta = 0.0;
-  SliceKind kind = SliceKind::interval;
-  int interval = 0;
-};
+using Planned = detail::PlannedSlice;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -40,6 +36,21 @@ void plan_interval(double a, double b, double step, int interval, std::vector<Pl
     out.push_back({wrap_angle(a + length * k / m), kind, interval});
   }
 }
+
+SliceCorrespondence correspond(int from, int to, const std::vector<SegmentLabel>& a,
+                               const std::vector<SegmentLabel>& b) {
+  SliceCorrespondence c;
+  c.from = from;
+  c.to = to;
+  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(c.kept));
+  std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(c.appearing));
+  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(c.vanishing));
+  return c;
+}
+
+}  // namespace
+
+namespace detail {
 
 // Every orientation to slice at, sorted by theta. Interval i runs from critical orientation
 // i to i + 1; the last wraps to the first plus 2 pi. With no critical orientation the whole
@@ -76,19 +87,8 @@ std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Plann
   return out;
 }
 
-SliceCorrespondence correspond(int from, int to, const std::vector<SegmentLabel>& a,
-                               const std::vector<SegmentLabel>& b) {
-  SliceCorrespondence c;
-  c.from = from;
-  c.to = to;
-  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(c.kept));
-  std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(c.appearing));
-  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(c.vanishing));
-  return c;
-}
-
 // Slice i to slice i + 1, and the last back to the first: theta = -pi and pi are one slice.
-std::vector<SliceCorrespondence> correspondences(const std::vector<SpaceSlice>& slices) {
+std::vector<SliceCorrespondence> slice_correspondences(const std::vector<SpaceSlice>& slices) {
   std::vector<std::vector<SegmentLabel>> labels;
   for (const SpaceSlice& s : slices) labels.push_back(realizable_labels(s.slice));
   std::vector<SliceCorrespondence> out;
@@ -100,7 +100,7 @@ std::vector<SliceCorrespondence> correspondences(const std::vector<SpaceSlice>& 
   return out;
 }
 
-}  // namespace
+}  // namespace detail
 
 std::string_view to_string(SliceKind k) {
   switch (k) {
@@ -160,9 +160,9 @@ SlicedSpace compute_space(const Pair& pair, const SpaceOptions& options) {
   start = std::chrono::steady_clock::now();
   space.reach = contact_reach(pair);
   space.max_step = interpolation_step(space.reach, pair.tol.contact);
-  space.slices =
-      compute_slices(pair, plan_slices(space.criticals, space.max_step), options.threads);
-  space.correspondence = correspondences(space.slices);
+  space.slices = detail::compute_slices(pair, detail::plan_slices(space.criticals, space.max_step),
+                                        options.threads);
+  space.correspondence = detail::slice_correspondences(space.slices);
   space.topology = compute_topology(pair, space, options.threads);
   space.seconds_slices = seconds_since(start);
   return space;

@@ -1,5 +1,6 @@
-// The sliced space as JSON (docs/space-format.md): per slice a summary, not the whole slice
-// (`cslice slice` gives that), so the file stays small enough to read back quickly.
+// The sliced space as JSON (docs/space-format.md): the pair itself, in the pair-file format,
+// and per slice a summary, not the whole slice (`cslice slice` gives that, and the reader
+// recomputes it), so the file stays small enough to read back quickly.
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -16,6 +17,56 @@ using json = nlohmann::ordered_json;
 // NaN and infinities have no JSON spelling; null says "no value".
 json number_or_null(double v) {
   return std::isfinite(v) ? json(v) : json(nullptr);
+}
+
+// One loop in the pair-file format, as the file gave it: loading reorients a loop so its
+// material lies on its left (reverse_loop in src/parts/part.cpp: new edge k is the reversal of
+// old edge n - 1 - k), so a reversed loop is turned back, which restores the file's vertices
+// and bulges bit for bit (reversal only swaps ends and negates the bulge). Read again, it
+// gives the same curves, the same orientation and the same feature numbering.
+json loop_json(const Loop& loop) {
+  if (loop.is_circle()) {
+    const Curve& c = loop.edges.front();
+    return {{"circle", json::array({c.center.x, c.center.y, c.radius})}};
+  }
+  json out = json::array();
+  const size_t n = loop.edges.size();
+  for (size_t k = 0; k < n; ++k) {
+    Vec2 p;
+    double bulge = 0.0;
+    if (loop.reversed) {
+      const Curve& e = loop.edges[n - 1 - k];
+      p = e.to;
+      bulge = -e.bulge;
+    } else {
+      p = loop.edges[k].from;
+      bulge = loop.edges[k].bulge;
+    }
+    json v = json::array({p.x, p.y});
+    if (bulge != 0.0) v.push_back(bulge);
+    out.push_back(std::move(v));
+  }
+  return out;
+}
+
+json part_json(const Part& part) {
+  std::vector<const Loop*> loops;
+  for (const Loop& loop : part.loops) loops.push_back(&loop);
+  std::stable_sort(loops.begin(), loops.end(),
+                   [](const Loop* a, const Loop* b) { return a->source_index < b->source_index; });
+  json list = json::array();
+  for (const Loop* loop : loops) list.push_back(loop_json(*loop));
+  json out = {{"loops", std::move(list)}};
+  if (part.enclosure) out["enclosure"] = true;
+  return out;
+}
+
+json pair_file_json(const Pair& pair) {
+  json out = {{"name", pair.name}, {"units", pair.units}};
+  if (pair.requested_tolerance) out["tolerance"] = *pair.requested_tolerance;
+  out["moving"] = part_json(pair.moving);
+  out["fixed"] = part_json(pair.fixed);
+  return out;
 }
 
 json labels_json(const std::vector<SegmentLabel>& labels) {
@@ -151,11 +202,16 @@ json topology_json(const SpaceTopology& topo) {
 
 }  // namespace
 
+std::string pair_file_text(const Pair& pair) {
+  return pair_file_json(pair).dump(2) + "\n";
+}
+
 std::string space_to_json(const Pair& pair, const SlicedSpace& space, bool with_timing) {
   json out = {{"format", "cslice-space"},
-              {"version", 1},
+              {"version", kSpaceFormatVersion},
               {"pair", pair.name},
               {"units", pair.units},
+              {"pair_file", pair_file_json(pair)},
               {"tolerance",
                {{"contact", pair.tol.contact},
                 {"geometric", pair.tol.geometric},

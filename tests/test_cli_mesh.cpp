@@ -1,0 +1,88 @@
+// `cslice mesh`: a computed space's contact surface written as OBJ, PLY or STL, whole or in
+// part; bad arguments exit 2 and leave no file.
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "support/cli_run.hpp"
+#include "support/examples.hpp"
+
+using namespace cslice;
+namespace fs = std::filesystem;
+
+namespace {
+
+int count_lines_starting(const std::string& text, const std::string& prefix) {
+  std::istringstream in(text);
+  int n = 0;
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(prefix, 0) == 0) ++n;
+  return n;
+}
+
+class MeshCli : public testkit::ScratchDirTest {
+ protected:
+  MeshCli() : ScratchDirTest("cslice_mesh") {}
+
+  std::string space() {
+    const std::string path = (dir_ / "cam-space.json").string();
+    const testkit::RunResult r = testkit::run_cli(
+        "compute " + testkit::quoted(testkit::example_path("cam")) + " -o " + testkit::quoted(path),
+        dir_);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return path;
+  }
+
+  testkit::RunResult mesh(const std::string& space_path, const std::string& args) {
+    return testkit::run_cli("mesh " + testkit::quoted(space_path) + " " + args, dir_);
+  }
+};
+
+}  // namespace
+
+TEST_F(MeshCli, WritesTheSameSurfaceInEveryFormat) {
+  const std::string s = space();
+  for (const char* ext : {"obj", "ply", "stl"}) {
+    const fs::path out = dir_ / (std::string("cam.") + ext);
+    const testkit::RunResult r = mesh(s, "-o " + testkit::quoted(out.string()));
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  const int obj_faces = count_lines_starting(testkit::read_file(dir_ / "cam.obj"), "f ");
+  const int stl_facets = count_lines_starting(testkit::read_file(dir_ / "cam.stl"), "  facet");
+  const std::string ply = testkit::read_file(dir_ / "cam.ply");
+  EXPECT_GT(obj_faces, 100);
+  EXPECT_EQ(stl_facets, obj_faces);
+  EXPECT_NE(ply.find("element face " + std::to_string(obj_faces)), std::string::npos);
+  EXPECT_NE(ply.find("property int moving_feature"), std::string::npos);
+}
+
+TEST_F(MeshCli, PartialReconstructionKeepsFewerTriangles) {
+  const std::string s = space();
+  const fs::path whole = dir_ / "whole.obj", part = dir_ / "part.obj";
+  ASSERT_EQ(mesh(s, "-o " + testkit::quoted(whole.string())).status, 0);
+  ASSERT_EQ(mesh(s, "-o " + testkit::quoted(part.string()) + " --theta -0.5,0.5").status, 0);
+  const int all = count_lines_starting(testkit::read_file(whole), "f ");
+  const int some = count_lines_starting(testkit::read_file(part), "f ");
+  EXPECT_GT(some, 0);
+  EXPECT_LT(some, all);
+}
+
+TEST_F(MeshCli, BadArgumentsExitTwoAndWriteNothing) {
+  const std::string s = space();
+  for (const std::string& args :
+       {std::string("-o ") + testkit::quoted((dir_ / "m.xyz").string()),
+        std::string("-o ") + testkit::quoted((dir_ / "m.obj").string()) + " --box 1,1,0,0",
+        std::string("-o ") + testkit::quoted((dir_ / "m.obj").string()) + " --theta a,b"}) {
+    const testkit::RunResult r = mesh(s, args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_FALSE(r.err.empty()) << args;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "m.xyz"));
+  EXPECT_FALSE(fs::exists(dir_ / "m.obj"));
+  testkit::write_file(dir_ / "bad.json", "{\"format\": \"cslice-space\"");
+  const testkit::RunResult r =
+      mesh((dir_ / "bad.json").string(), "-o " + testkit::quoted((dir_ / "m.obj").string()));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("bad.json"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "m.obj"));
+}
