@@ -32,6 +32,8 @@ for pair in examples/*.json; do
   "$cslice" mesh "out/$name-space.json" -o "out/$name-contact.ply"
   echo "   pictures: out/$name.svg, out/$name-slice.svg; data: out/$name-{slice,critical,space}.json, out/$name-analysis.txt, out/$name-contact.ply"
 done
+echo "== queries on the fixture's space: the engaging configuration, just below it, far away"
+printf '2.1 -0.7 0\n2.1 -0.75 0\n50 50 1\n' | "$cslice" query out/fixture-space.json
 echo "== run-time table (the paper's Figure 8, measured here)"
 "$cslice" stats examples/knee.json examples/cam.json examples/fixture.json examples/fastener.json \
   | tee out/stats.md

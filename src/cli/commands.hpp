@@ -59,5 +59,6 @@ void register_mesh(CLI::App& app);
 void register_compute(CLI::App& app);
 void register_stats(CLI::App& app);
 void register_analyze(CLI::App& app);
+void register_query(CLI::App& app);
 
 }  // namespace cslice::cli

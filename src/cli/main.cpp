@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   cslice::cli::register_compute(app);
   cslice::cli::register_stats(app);
   cslice::cli::register_analyze(app);
+  cslice::cli::register_query(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

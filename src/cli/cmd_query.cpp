@@ -1,0 +1,81 @@
+// `cslice query SPACE.json`: point queries answered from a computed space (SpaceQuery). Reads
+// 'x y theta' lines from standard input, all of them before answering any, and prints one
+// answer a line: `free C` (C the 3D free component), `contact M F` (the touching moving and
+// fixed features) or `blocked`.
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cslice/query.hpp"
+
+namespace cslice::cli {
+namespace {
+
+struct QueryCommand {
+  std::string space_path;
+  int threads = 0;
+};
+
+// Blank lines and '#' comments carry no pose; everything else must be one.
+bool is_skipped_line(const std::string& line) {
+  const auto first = line.find_first_not_of(" \t\r");
+  return first == std::string::npos || line[first] == '#';
+}
+
+std::vector<Pose> read_poses(std::istream& in) {
+  std::vector<Pose> poses;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (is_skipped_line(line)) continue;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    poses.push_back(parse_pose_or_exit(line, "standard input, line " + std::to_string(number)));
+  }
+  return poses;
+}
+
+void run(const QueryCommand& cmd) {
+  if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
+  LoadSpaceResult loaded = load_space(cmd.space_path, cmd.threads);
+  if (!loaded.ok()) throw ExitError(kExitBadInput, loaded.error->message());
+  const std::vector<Pose> poses = read_poses(std::cin);
+  SpaceQuery query(*loaded.pair, *loaded.space);
+  std::string out;
+  out.reserve(poses.size() * 10);
+  for (const Pose& pose : poses) {
+    const QueryAnswer a = query.query(pose);
+    switch (a.placement) {
+      case Placement::free:
+        out += "free " + std::to_string(a.component) + "\n";
+        break;
+      case Placement::contact:
+        out += "contact " + std::to_string(a.contact.moving_feature) + " " +
+               std::to_string(a.contact.fixed_feature) + "\n";
+        break;
+      case Placement::blocked:
+        out += "blocked\n";
+        break;
+    }
+  }
+  deliver_outputs({{kStdout, out}});
+}
+
+}  // namespace
+
+void register_query(CLI::App& app) {
+  auto cmd = std::make_shared<QueryCommand>();
+  CLI::App* sub = app.add_subcommand(
+      "query",
+      "Answer placements from a computed space (cslice compute): reads 'x y theta' lines\n"
+      "(theta in radians; commas also separate; blank lines and lines starting with # are\n"
+      "skipped) and prints 'free C' (C the 3D free component), 'contact M F' (the touching\n"
+      "moving and fixed features) or 'blocked' for each.");
+  sub->add_option("space", cmd->space_path, "Space file (JSON, see docs/space-format.md)")
+      ->required();
+  sub->add_option("--threads", cmd->threads,
+                  "Slices recomputed at once when reading the file (default 0: every core)");
+  sub->callback([cmd] { run(*cmd); });
+}
+
+}  // namespace cslice::cli
