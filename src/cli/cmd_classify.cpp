@@ -17,24 +17,6 @@ struct ClassifyOptions {
   std::vector<std::string> at;
 };
 
-// Blank lines and '#' comments carry no pose; everything else must be one.
-bool is_skipped_line(const std::string& line) {
-  const auto first = line.find_first_not_of(" \t\r");
-  return first == std::string::npos || line[first] == '#';
-}
-
-// Reads every pose before classifying any, so a bad line stops the run with nothing printed.
-std::vector<Pose> read_poses(std::istream& in) {
-  std::vector<Pose> poses;
-  std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
-    if (is_skipped_line(line)) continue;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    poses.push_back(parse_pose_or_exit(line, "standard input, line " + std::to_string(number)));
-  }
-  return poses;
-}
-
 std::vector<Pose> poses_from_options(const std::vector<std::string>& at) {
   std::vector<Pose> poses;
   poses.reserve(at.size());
@@ -46,7 +28,7 @@ std::vector<Pose> poses_from_options(const std::vector<std::string>& at) {
 void run_classify(const ClassifyOptions& options) {
   const Pair pair = load_pair_or_exit(options.pair_path);
   const std::vector<Pose> poses =
-      options.at.empty() ? read_poses(std::cin) : poses_from_options(options.at);
+      options.at.empty() ? read_poses_or_exit(std::cin) : poses_from_options(options.at);
   PlacementTester tester(pair);
   // Buffered so that standard output stays empty if anything below throws.
   std::string out;

@@ -18,28 +18,11 @@ struct QueryCommand {
   int threads = 0;
 };
 
-// Blank lines and '#' comments carry no pose; everything else must be one.
-bool is_skipped_line(const std::string& line) {
-  const auto first = line.find_first_not_of(" \t\r");
-  return first == std::string::npos || line[first] == '#';
-}
-
-std::vector<Pose> read_poses(std::istream& in) {
-  std::vector<Pose> poses;
-  std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
-    if (is_skipped_line(line)) continue;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    poses.push_back(parse_pose_or_exit(line, "standard input, line " + std::to_string(number)));
-  }
-  return poses;
-}
-
 void run(const QueryCommand& cmd) {
   if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
   LoadSpaceResult loaded = load_space(cmd.space_path, cmd.threads);
   if (!loaded.ok()) throw ExitError(kExitBadInput, loaded.error->message());
-  const std::vector<Pose> poses = read_poses(std::cin);
+  const std::vector<Pose> poses = read_poses_or_exit(std::cin);
   SpaceQuery query(*loaded.pair, *loaded.space);
   std::string out;
   out.reserve(poses.size() * 10);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <iosfwd>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -34,6 +35,10 @@ void deliver_outputs(std::vector<std::pair<std::string, std::string>> outputs);
 Pair load_pair_or_exit(const std::string& path);
 // Parses "x,y,theta" (theta in radians) or throws ExitError(2) naming `what`.
 Pose parse_pose_or_exit(const std::string& text, const std::string& what);
+// Every pose of `in`, one "x y theta" per line (blank lines and '#' comments skipped), read
+// before anything is answered so that a bad line stops the run with nothing printed; throws
+// ExitError(2) naming the line.
+std::vector<Pose> read_poses_or_exit(std::istream& in);
 // Parses "x,y" or throws ExitError(2) naming `what`. Like a pose, commas or spaces separate.
 Vec2 parse_point_or_exit(const std::string& text, const std::string& what);
 

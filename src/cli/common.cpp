@@ -1,6 +1,7 @@
 #include <cmath>
 #include <cstdio>
 #include <initializer_list>
+#include <istream>
 #include <sstream>
 
 #include "cli/commands.hpp"
@@ -8,6 +9,12 @@
 namespace cslice::cli {
 
 namespace {
+
+// Blank lines and '#' comments carry no pose; everything else must be one.
+bool is_skipped_line(const std::string& line) {
+  const auto first = line.find_first_not_of(" \t\r");
+  return first == std::string::npos || line[first] == '#';
+}
 
 // Reads one finite number into each of `values` from `text`, where commas count as spaces;
 // false if any is missing or not finite, or anything follows them.
@@ -62,6 +69,17 @@ std::pair<double, double> parse_range_or_exit(const std::string& text, const std
   if (!read_finite_numbers(text, {&a, &b}))
     throw ExitError(kExitBadInput, what + ": expected two finite angles A,B, got '" + text + "'");
   return {a, b};
+}
+
+std::vector<Pose> read_poses_or_exit(std::istream& in) {
+  std::vector<Pose> poses;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (is_skipped_line(line)) continue;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    poses.push_back(parse_pose_or_exit(line, "standard input, line " + std::to_string(number)));
+  }
+  return poses;
 }
 
 std::string format_number(double v) {
