@@ -36,6 +36,8 @@ class PlacementTester {
 
  private:
   void place(const Pose& pose);
+  // Whether the placed moving part comes within the contact tolerance of the fixed part's box.
+  bool within_reach() const;
   bool interiors_overlap();
   bool boundaries_within(double distance_limit) const;
   bool moving_contains(Vec2 p) const;

@@ -133,21 +133,20 @@ bool PlacementTester::boundaries_within(double distance_limit) const {
 }
 
 Placement PlacementTester::classify(const Pose& pose) {
-  place(pose);
-  const Box reach = moving_box_.inflated(pair_.tol.contact);
-  if (!reach.overlaps(pair_.fixed.box)) {
-    // Far from every fixed loop: inside the material only for an enclosure.
-    return pair_.fixed.enclosure ? Placement::blocked : Placement::free;
-  }
-  if (interiors_overlap()) return Placement::blocked;
+  if (blocked(pose)) return Placement::blocked;
+  if (!within_reach()) return Placement::free;
   return boundaries_within(pair_.tol.contact) ? Placement::contact : Placement::free;
 }
 
 bool PlacementTester::blocked(const Pose& pose) {
   place(pose);
-  if (!moving_box_.inflated(pair_.tol.contact).overlaps(pair_.fixed.box))
-    return pair_.fixed.enclosure;
+  // Far from every fixed loop: inside the material only for an enclosure.
+  if (!within_reach()) return pair_.fixed.enclosure;
   return interiors_overlap();
+}
+
+bool PlacementTester::within_reach() const {
+  return moving_box_.inflated(pair_.tol.contact).overlaps(pair_.fixed.box);
 }
 
 double PlacementTester::boundary_distance(const Pose& pose) {
