@@ -56,8 +56,8 @@ class CriticalFinder {
   }
 
   CriticalSet run() {
-    // Finer bins cull more pairs but cost a cover per alive family each; measured best
-    // near one bin per eight families (docs/performance.md).
+    // Finer bins cull more pairs but cost a cover per alive family each; on the random
+    // curved pairs of bench_critical one bin per eight families measured best.
     const int count = std::clamp(int(families_.size()) / 8, 32, 1 << 12);
     bin_width_ = kTwoPi / count;
     switches_.assign(count, {});
@@ -210,17 +210,20 @@ class CriticalFinder {
     return out;
   }
 
-  bool on_family(int family, double theta, Vec2 x) {
-    for (const ContactSegment& s : segments_of(family, theta, scratch_))
-      if (distance_to_curve(s.curve, x) <= pair_.tol.criticality) return true;
-    return false;
-  }
-
-  bool at_family_end(int family, double theta, Vec2 x) {
-    for (const ContactSegment& s : segments_of(family, theta, scratch_))
-      if (std::min(distance(s.curve.from, x), distance(s.curve.to, x)) <= pair_.tol.criticality)
-        return true;
-    return false;
+  // How near x lies to the family's contact segments at theta, and to their ends: one
+  // rebuild of the segments answers both.
+  struct Nearness {
+    bool on_segment = false;
+    bool at_end = false;
+  };
+  Nearness nearness(int family, double theta, Vec2 x) {
+    Nearness n;
+    const double tol = pair_.tol.criticality;
+    for (const ContactSegment& s : segments_of(family, theta, scratch_)) {
+      n.on_segment |= distance_to_curve(s.curve, x) <= tol;
+      n.at_end |= std::min(distance(s.curve.from, x), distance(s.curve.to, x)) <= tol;
+    }
+    return n;
   }
 
   // A cheap first test: every family involved exists at theta.
@@ -233,27 +236,31 @@ class CriticalFinder {
   void add_endpoint(int a, int end, int b, double theta) {
     if (!all_alive({a, b}, theta)) return reject();
     const Vec2 x = families_[a].ends[end].at(theta);
-    if (!at_family_end(a, theta, x) || !on_family(b, theta, x)) return reject();
+    if (!nearness(a, theta, x).at_end || !nearness(b, theta, x).on_segment) return reject();
     keep_point(CriticalCondition::endpoint, {a, b}, theta, x);
   }
 
   void add_tangent(int a, int b, double theta) {
     if (!all_alive({a, b}, theta)) return reject();
     const Vec2 x = tangent_point(equations_[a], equations_[b], theta);
-    if (!on_family(a, theta, x) || !on_family(b, theta, x)) return reject();
+    if (!nearness(a, theta, x).on_segment || !nearness(b, theta, x).on_segment) return reject();
     keep_point(CriticalCondition::tangent, {a, b}, theta, x);
   }
 
   void add_triple(int a, int b, int c, double theta) {
     if (!all_alive({a, b, c}, theta)) return reject();
     const std::optional<Vec2> x = triple_point(equations_[a], equations_[b], equations_[c], theta);
-    if (!x || !on_family(a, theta, *x) || !on_family(b, theta, *x) || !on_family(c, theta, *x))
-      return reject();
+    if (!x) return reject();
     // Three curves through the end of one of them is an endpoint event, which its own
     // (better conditioned) equation finds; the triple equation there is near-degenerate
     // when two of the curves always share that end.
-    if (at_family_end(a, theta, *x) || at_family_end(b, theta, *x) || at_family_end(c, theta, *x))
-      return reject();
+    bool at_an_end = false;
+    for (int f : {a, b, c}) {
+      const Nearness n = nearness(f, theta, *x);
+      if (!n.on_segment) return reject();
+      at_an_end |= n.at_end;
+    }
+    if (at_an_end) return reject();
     keep_point(CriticalCondition::triple, {a, b, c}, theta, *x);
   }
 
