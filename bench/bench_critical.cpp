@@ -29,21 +29,9 @@ const cslice::Pair& curved_pair(int n) {
   if (auto it = cache.find(n); it != cache.end()) return it->second;
   for (unsigned seed = 2026; seed < 2100; ++seed) {
     std::mt19937 rng(seed + static_cast<unsigned>(n));
-    cslice::testkit::StarOptions f;
-    f.vertices = n;
-    f.radius = 3.0;
-    f.radial_jitter = 0.1;
-    f.lobes = 3;
-    f.lobe_depth = 0.3;
-    f.arc_fraction = 0.5;
-    f.min_sagitta = 1e-7;
-    cslice::testkit::StarOptions m = f;
-    m.radius = 1.0;
-    m.center = {0.1, -0.2};
-    const auto fixed = cslice::testkit::random_star(rng, f);
-    const auto moving = cslice::testkit::random_star(rng, m);
-    cslice::LoadResult r =
-        cslice::parse_pair(cslice::testkit::pair_json("curved", {moving}, {fixed}), "curved");
+    const cslice::testkit::StarPairLoops loops = cslice::testkit::lobed_star_pair(rng, n, 0.1, 0.5);
+    cslice::LoadResult r = cslice::parse_pair(
+        cslice::testkit::pair_json("curved", {loops.moving}, {loops.fixed}), "curved");
     if (r.ok()) return cache.emplace(n, std::move(*r.pair)).first->second;
   }
   throw std::runtime_error("curved_pair: no seed gave a valid pair");

@@ -62,21 +62,13 @@ const BenchPair& star_pair(Shape shape, int n) {
   if (auto it = cache.find(key); it != cache.end()) return it->second;
   for (unsigned seed = 2026;; ++seed) {
     std::mt19937 rng(seed + static_cast<unsigned>(n));
-    cslice::testkit::StarOptions f;
-    f.vertices = n;
-    f.radius = 3.0;
-    f.radial_jitter = shape == Shape::rough ? 0.3 * cslice::kTwoPi / n : 0.0;
-    f.angle_jitter = 0.8;
-    f.lobes = 3;
-    f.lobe_depth = 0.3;
-    f.arc_fraction = shape == Shape::curved ? 0.5 : 0.0;
-    f.min_sagitta = 1e-7;  // about 8 times the reader's geometric tolerance for these pairs
-    cslice::testkit::StarOptions m = f;
-    m.radius = 1.0;
-    m.center = {0.1, -0.2};
+    const double radial_jitter = shape == Shape::rough ? 0.3 * cslice::kTwoPi / n : 0.0;
+    const double arc_fraction = shape == Shape::curved ? 0.5 : 0.0;
+    const cslice::testkit::StarPairLoops loops =
+        cslice::testkit::lobed_star_pair(rng, n, radial_jitter, arc_fraction);
     BenchPair p;
-    p.fixed = cslice::testkit::random_star(rng, f);
-    p.moving = cslice::testkit::random_star(rng, m);
+    p.fixed = loops.fixed;
+    p.moving = loops.moving;
     cslice::LoadResult r =
         cslice::parse_pair(cslice::testkit::pair_json("star", {p.moving}, {p.fixed}), "star");
     if (!r.ok()) {

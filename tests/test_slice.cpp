@@ -312,21 +312,9 @@ TEST(SliceOracle, CurvedStarsWithTinyReflexTurnsKeepTheirFreeSpace) {
   // Seeds whose slice leaked before, each through a different one of those cases.
   for (unsigned seed : {2026u, 2054u, 2116u, 2124u, 2129u}) {
     std::mt19937 rng(seed + 2000u);
-    testkit::StarOptions f;
-    f.vertices = 2000;
-    f.radius = 3.0;
-    f.radial_jitter = 0.0;
-    f.angle_jitter = 0.8;
-    f.lobes = 3;
-    f.lobe_depth = 0.3;
-    f.arc_fraction = 0.5;
-    f.min_sagitta = 1e-7;
-    testkit::StarOptions m = f;
-    m.radius = 1.0;
-    m.center = {0.1, -0.2};
-    const testkit::LoopVertices fixed = testkit::random_star(rng, f);
-    const testkit::LoopVertices moving = testkit::random_star(rng, m);
-    LoadResult r = parse_pair(testkit::pair_json("curved", {moving}, {fixed}), "curved");
+    const testkit::StarPairLoops loops = testkit::lobed_star_pair(rng, 2000, 0.0, 0.5);
+    LoadResult r =
+        parse_pair(testkit::pair_json("curved", {loops.moving}, {loops.fixed}), "curved");
     ASSERT_TRUE(r.ok()) << seed;
     const std::string what = "curved stars, seed " + std::to_string(seed);
     const Slice s = compute_slice(*r.pair, 0.7);

@@ -63,6 +63,26 @@ LoopVertices random_star(std::mt19937& rng, const StarOptions& o) {
   return loop;
 }
 
+StarPairLoops lobed_star_pair(std::mt19937& rng, int vertices, double radial_jitter,
+                              double arc_fraction) {
+  StarOptions f;
+  f.vertices = vertices;
+  f.radius = 3.0;
+  f.radial_jitter = radial_jitter;
+  f.angle_jitter = 0.8;
+  f.lobes = 3;
+  f.lobe_depth = 0.3;
+  f.arc_fraction = arc_fraction;
+  f.min_sagitta = 1e-7;  // about 8 times the reader's geometric tolerance for these pairs
+  StarOptions m = f;
+  m.radius = 1.0;
+  m.center = {0.1, -0.2};
+  StarPairLoops p;
+  p.fixed = random_star(rng, f);
+  p.moving = random_star(rng, m);
+  return p;
+}
+
 LoopVertices random_comb(std::mt19937& rng, const CombOptions& o) {
   const double d = o.part_size;
   struct Tooth {

@@ -53,6 +53,17 @@ struct StarOptions {
 // pass it through parse_pair, which validates, when in doubt.
 LoopVertices random_star(std::mt19937& rng, const StarOptions& options);
 
+// The lobed star pairs of the benchmarks, and of tests that reproduce them: a fixed star of
+// radius 3 about the origin and a moving one of radius 1 centred at (0.1, -0.2) off its body
+// origin, both with three lobes of depth 0.3 and `vertices` vertices, radii jittered by
+// `radial_jitter` (a fraction of the radius), a share `arc_fraction` of the edges arcs.
+// The fixed star is drawn first.
+struct StarPairLoops {
+  LoopVertices moving, fixed;
+};
+StarPairLoops lobed_star_pair(std::mt19937& rng, int vertices, double radial_jitter,
+                              double arc_fraction);
+
 struct CombOptions {
   int teeth = 3;
   // The width of the part meant to get caught: pocket mouths are drawn around it (some
