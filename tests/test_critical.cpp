@@ -248,6 +248,26 @@ TEST(CriticalExamples, CountsAreInThePapersRange) {
   }
 }
 
+TEST(CriticalParallel, OneAndTwoThreadsGiveTheSameSet) {
+  std::vector<Pair> pairs;
+  for (const char* name : {"knee", "fixture", "fastener"})
+    pairs.push_back(testkit::load_example(name));
+  std::mt19937 rng(77);
+  const testkit::StarPairLoops star = testkit::lobed_star_pair(rng, 12, 0.1, 0.5);
+  pairs.push_back(
+      testkit::parse_or_throw(testkit::pair_json("star", {star.moving}, {star.fixed}), "star"));
+  for (const Pair& pair : pairs) {
+    CriticalOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    const CriticalSet a = critical_orientations(pair, one), b = critical_orientations(pair, two);
+    EXPECT_EQ(critical_set_to_json(pair, a), critical_set_to_json(pair, b)) << pair.name;
+    EXPECT_EQ(a.stats.equations, b.stats.equations) << pair.name;
+    EXPECT_EQ(a.stats.culled, b.stats.culled) << pair.name;
+    EXPECT_EQ(a.stats.blocked, b.stats.blocked) << pair.name;
+  }
+}
+
 // ---- The command ----------------------------------------------------------------------
 
 class CriticalCli : public testkit::ScratchDirTest {

@@ -49,12 +49,17 @@ struct CriticalOptions {
   // fixed one deeper than the criticality tolerance), where a slice's realizable contact
   // cannot change. Off, every solution that survives local overlap filtering is kept.
   bool screen_blocked = true;
+  // Threads at once (oneTBB); 0 lets oneTBB choose (every core). The result is the same
+  // whatever the count.
+  int threads = 0;
 };
 
 struct CriticalStats {
   int families = 0;             // feature pairs that touch at some orientation
   long long equations = 0;      // criticality equations solved
   long long roots = 0;          // their roots in range
+  long long culled = 0;         // roots dropped unvalidated: outside every theta-bin where
+                                // their families come close enough to meet
   long long off_segment = 0;    // roots rejected: a family not alive there, the point off
                                 // its contact segments, or a triple at a segment's end
   long long blocked = 0;        // dropped by screening

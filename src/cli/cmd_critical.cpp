@@ -41,6 +41,11 @@ std::string table_text(const Pair& pair, const CriticalSet& set, double millisec
     out += summary_row("  " + std::string(to_string(CriticalCondition(c))), 22,
                        std::to_string(set.counts[c]));
   out += summary_row("screened as blocked", 22, std::to_string(set.stats.blocked));
+  out += summary_row("contact families", 22, std::to_string(set.stats.families));
+  out += summary_row("equations solved", 22, std::to_string(set.stats.equations));
+  out += summary_row("roots", 22, std::to_string(set.stats.roots));
+  out += summary_row("  culled", 22, std::to_string(set.stats.culled));
+  out += summary_row("  off their segments", 22, std::to_string(set.stats.off_segment));
   out += summary_row("time", 22, format_number(milliseconds) + " ms");
   return out;
 }

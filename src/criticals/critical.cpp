@@ -2,14 +2,26 @@
 // families, kept when its configuration lies on the contact segments it involves (their
 // parameter limits) and, optionally, outside blocked space.
 //
-// Pairs and triples of families are only solved when they can meet: theta is cut into
-// bins, each family gets a box per bin it is alive in (holding all its contact segments
-// there), and only families whose boxes overlap in some bin are paired (a sweep along x).
-// Each pair or triple is solved once over the whole circle.
+// Four passes, each parallel (oneTBB) and each giving the same result whatever the thread
+// count, because every decision depends only on its own candidate and results are sorted
+// before they are combined:
+//  1. Meeting: per theta-bin, the pairs and triples of families that may meet there
+//     (src/criticals/candidates.cpp). Each distinct pair or triple keeps its bins.
+//  2. Solving: each pair or triple is solved once over the whole circle; a root outside the
+//     bins where its families may meet is dropped unvalidated (culled), the others are
+//     validated on the real contact segments.
+//  3. Screening: each distinct configuration is tested once for blocked space; blocked ones
+//     that could still reach free space along a contact segment (overlapping segments,
+//     segment ends) are probed piece by piece, bin by bin.
+//  4. Grouping into critical orientations (paper section 9).
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #include <algorithm>
 #include <map>
-#include <unordered_set>
+#include <memory>
 
+#include "criticals/candidates.hpp"
 #include "criticals/events.hpp"
 #include "cslice/classify.hpp"
 #include "cslice/critical.hpp"
@@ -32,53 +44,40 @@ std::string_view to_string(CriticalCondition c) {
 
 namespace {
 
-// A family alive in a bin: its cover at the bin's middle orientation, how far its contact
-// segments can stray from that cover within the bin, and the box holding them all.
-struct BinEntry {
-  int family = 0;
-  Curve cover;
-  double margin = 0.0;
-  Box box;
+// A solution that passed validation, before screening. Families ascending within a
+// condition's own order (an endpoint's first family owns the end).
+struct Candidate {
+  CriticalCondition condition = CriticalCondition::segment_end;
+  std::array<int, 3> families{-1, -1, -1};
+  int count = 0;
+  double theta = 0.0;
+  Vec2 at;
 };
 
-class CriticalFinder {
- public:
-  CriticalFinder(const Pair& pair, const CriticalOptions& options)
-      : pair_(pair),
-        options_(options),
-        screen_pair_(screening_pair(pair)),
-        tester_(screen_pair_),
-        moving_(contact_features(pair.moving)),
-        fixed_(contact_features(pair.fixed)),
-        families_(contact_families(pair)) {
-    for (const ContactFamily& f : families_) equations_.push_back(family_equation(f));
-    set_.stats.families = int(families_.size());
+bool before(const Candidate& x, const Candidate& y) {
+  if (x.theta != y.theta) return x.theta < y.theta;
+  if (x.condition != y.condition) return x.condition < y.condition;
+  if (x.families != y.families) return x.families < y.families;
+  if (x.at.x != y.at.x) return x.at.x < y.at.x;
+  return x.at.y < y.at.y;
+}
+
+// Everything the passes read and none of them writes.
+struct Context {
+  Context(const Pair& p, const CriticalOptions& o)
+      : pair(p),
+        options(o),
+        screen_pair(screening_pair(p)),
+        moving(contact_features(p.moving)),
+        fixed(contact_features(p.fixed)),
+        families(contact_families(p)),
+        // Finer bins cull more pairs but cost a cover per alive family each; one bin per
+        // eight families, at least 32, measured best on the random pairs of bench_critical.
+        binning(std::clamp(int(families.size()) / 8, 32, 1 << 12)),
+        alive(alive_families_by_bin(families, binning)) {
+    for (const ContactFamily& f : families) equations.push_back(family_equation(f));
   }
 
-  CriticalSet run() {
-    // Finer bins cull more pairs but cost a cover per alive family each; on the random
-    // curved pairs of bench_critical one bin per eight families measured best.
-    const int count = std::clamp(int(families_.size()) / 8, 32, 1 << 12);
-    bin_width_ = kTwoPi / count;
-    switches_.assign(count, {});
-    for (size_t i = 0; i < families_.size(); ++i)
-      for (double theta : families_[i].switches)
-        switches_[bin_of(theta)].push_back({int(i), theta});
-    pending_.assign(count, {});
-    for (int b = 0; b < count; ++b) solve_bin(b);
-    // Pairs are solved once, in the first bin where they may meet, so a root may fall in
-    // another bin; probing its contact segments needs that bin's neighbours.
-    for (int b = 0; b < count; ++b) {
-      if (pending_[b].empty()) continue;
-      current_bin_ = b;
-      fill_bin(b);
-      for (const Pending& p : pending_[b]) keep_point(p.condition, {p.a, p.b}, p.theta, p.at);
-    }
-    group();
-    return std::move(set_);
-  }
-
- private:
   // The pair with its geometric epsilon widened to the criticality tolerance: the placement
   // test then calls blocked only overlaps deeper than a criticality's own round-off.
   static Pair screening_pair(const Pair& pair) {
@@ -87,117 +86,81 @@ class CriticalFinder {
     return p;
   }
 
-  // ---- Candidate pairs and triples ----------------------------------------------------
-
-  int bin_of(double theta) const {
-    const int b = int(std::floor((wrap_angle(theta) + kPi) / bin_width_));
-    return std::clamp(b, 0, int(switches_.size()) - 1);
+  std::vector<BinEntry> entries(int bin) const {
+    return bin_entries(families, alive[bin], binning, bin, pair.tol.criticality);
   }
 
-  // Families alive in bin b, each with its cover at the bin's middle.
-  void fill_bin(int b) {
-    const double lo = -kPi + b * bin_width_, mid = lo + 0.5 * bin_width_;
-    bin_.clear();
-    for (size_t i = 0; i < families_.size(); ++i) {
-      const ContactFamily& f = families_[i];
-      if (!alive_within(f, lo, lo + bin_width_)) continue;
-      BinEntry e;
-      e.family = int(i);
-      e.cover = family_cover(f, mid);
-      e.margin = family_drift(f) * 0.5 * bin_width_ + pair_.tol.criticality;
-      e.box = bounding_box(e.cover).inflated(e.margin);
-      bin_.push_back(e);
-    }
-  }
+  const Pair& pair;
+  CriticalOptions options;
+  Pair screen_pair;
+  std::vector<ContactFeature> moving, fixed;
+  std::vector<ContactFamily> families;
+  std::vector<FamilyEquation> equations;
+  Binning binning;
+  std::vector<std::vector<int>> alive;  // per bin
+};
 
-  // Two families can meet within the bin only if their covers come within their margins.
-  bool may_meet(const BinEntry& x, const BinEntry& y) const {
-    return x.box.overlaps(y.box) && distance_between(x.cover, y.cover) <= x.margin + y.margin;
-  }
+// Solves and validates (pass 2) and probes blocked space (pass 3); one per thread.
+class Worker {
+ public:
+  explicit Worker(const Context& ctx) : ctx_(ctx), tester_(ctx.screen_pair) {}
 
-  // Whether the third family can pass through a point where the first two meet within the
-  // bin. Where covers x and y cross at an angle phi, their crossing stays within the meeting
-  // of two bands as wide as their margins: (margin_x + margin_y) / sin(phi) from where it is
-  // at the bin's middle (doubled for the curvature of arcs). Covers that only come close,
-  // or cross nearly tangentially, give no bound.
-  bool may_meet_at(const BinEntry& x, const BinEntry& y, const Intersection& meet,
-                   const BinEntry& z) const {
-    if (meet.kind == IntersectionKind::none || meet.kind == IntersectionKind::overlapping)
-      return true;
-    for (int h = 0; h < meet.count; ++h) {
-      const IntersectionHit& hit = meet.hits[h];
-      const double sine =
-          std::fabs(cross(tangent_at(x.cover, hit.ta0), tangent_at(y.cover, hit.tb0)));
-      const double drift = 2.0 * (x.margin + y.margin);
-      if (drift >= sine * pair_.tol.size) return true;  // could drift across the whole pair
-      if (distance_to_curve(z.cover, hit.point) <= z.margin + drift / sine) return true;
-    }
-    return false;
-  }
+  CriticalStats stats;
+  std::vector<Candidate> found;  // validated solutions
 
-  void solve_bin(int b) {
-    current_bin_ = b;
-    fill_bin(b);
-    std::vector<BinEntry>& bin = bin_;
-    std::sort(bin.begin(), bin.end(),
-              [](const BinEntry& x, const BinEntry& y) { return x.box.lo.x < y.box.lo.x; });
-    std::vector<std::vector<int>> neighbours(bin.size());
-    for (size_t i = 0; i < bin.size(); ++i)
-      for (size_t j = i + 1; j < bin.size() && bin[j].box.lo.x <= bin[i].box.hi.x; ++j)
-        if (may_meet(bin[i], bin[j])) {
-          neighbours[i].push_back(int(j));
-          neighbours[j].push_back(int(i));
-          solve_pair(bin[i].family, bin[j].family);
-        }
-    for (auto& n : neighbours) std::sort(n.begin(), n.end());
-    for (size_t i = 0; i < bin.size(); ++i)
-      for (int j : neighbours[i]) {
-        if (j <= int(i)) continue;
-        std::optional<Intersection> meet;  // computed when a third family needs it
-        for (int k : neighbours[j]) {
-          if (k <= j || !std::binary_search(neighbours[i].begin(), neighbours[i].end(), k))
-            continue;
-          if (!meet) meet = intersect(bin[i].cover, bin[j].cover, pair_.tol.geometric);
-          if (may_meet_at(bin[i], bin[j], *meet, bin[k]))
-            solve_triple(bin[i].family, bin[j].family, bin[k].family);
-        }
-      }
-    for (const auto& [family, theta] : switches_[b]) add_segment_end(family, theta);
-  }
-
-  // Exact keys (no hashing collisions can drop a pair): family indices in base N.
-  uint64_t key(uint64_t a, uint64_t b, uint64_t c = 0) const {
-    const uint64_t n = families_.size() + 1;
-    return (a * n + b) * n + c;
-  }
-
-  void solve_pair(int i, int j) {
-    if (i > j) std::swap(i, j);
-    if (!solved_pairs_.insert(key(i, j)).second) return;
-    for (auto [a, b] : {std::pair{i, j}, std::pair{j, i}})
-      for (size_t e = 0; e < families_[a].ends.size(); ++e)
-        for (double theta : roots(endpoint_equation(families_[a].ends[e], equations_[b])))
+  void solve_pair(const MeetingTask& t) {
+    for (auto [a, b] : {std::pair{t.a, t.b}, std::pair{t.b, t.a}})
+      for (size_t e = 0; e < ctx_.families[a].ends.size(); ++e)
+        for (double theta :
+             roots(endpoint_equation(ctx_.families[a].ends[e], ctx_.equations[b]), t.bins))
           add_endpoint(a, int(e), b, theta);
     std::array<EventEquation, 2> tangents;
-    const int n = tangent_equations(equations_[i], equations_[j], tangents);
+    const int n = tangent_equations(ctx_.equations[t.a], ctx_.equations[t.b], tangents);
     for (int k = 0; k < n; ++k)
-      for (double theta : roots(tangents[k])) add_tangent(i, j, theta);
+      for (double theta : roots(tangents[k], t.bins)) add_tangent(t.a, t.b, theta);
   }
 
-  void solve_triple(int i, int j, int k) {
-    int f[3] = {i, j, k};
-    std::sort(f, f + 3);
-    if (!solved_triples_.insert(key(f[0], f[1], f[2])).second) return;
-    const EventEquation eq = triple_equation(equations_[f[0]], equations_[f[1]], equations_[f[2]]);
-    for (double theta : roots(eq)) add_triple(f[0], f[1], f[2], theta);
+  void solve_triple(const MeetingTask& t) {
+    const auto& eq = ctx_.equations;
+    for (double theta : roots(triple_equation(eq[t.a], eq[t.b], eq[t.c]), t.bins))
+      add_triple(t.a, t.b, t.c, theta);
   }
 
-  std::vector<double> roots(const EventEquation& eq) {
-    ++set_.stats.equations;
+  // ---- Screening --------------------------------------------------------------------
+
+  bool blocked(Vec2 x, double theta) { return tester_.blocked({x.x, x.y, theta}); }
+
+  // Whether a candidate of two overlapping families (parallel edges brought into line, equal
+  // circles), or a segment appearing, vanishing or switching ends, reaches free space: it
+  // changes the slice along a whole piece of contact segment, not only at its point.
+  // The probes' cache lasts for one bin's candidates, which one worker takes in a fixed
+  // order, so that the answers do not depend on the thread count.
+  void start_bin() { cache_.clear(); }
+  bool reaches_free(const Candidate& c, const std::vector<BinEntry>& bin) {
+    if (c.condition == CriticalCondition::segment_end) return segment_end_reaches_free(c, bin);
+    return overlap_reaches_free(c, bin);
+  }
+
+ private:
+  std::vector<double> roots(const EventEquation& eq, const std::vector<int>& bins) {
+    ++stats.equations;
     const TrigRoots r = trig_roots(eq.f, kRelativeGeometricEpsilon * eq.magnitude,
-                                   kRelativeGeometricEpsilon, pair_.tol.angular);
-    set_.stats.roots += long(r.roots.size());
-    return r.roots;
+                                   kRelativeGeometricEpsilon, ctx_.pair.tol.angular);
+    stats.roots += long(r.roots.size());
+    std::vector<double> near;
+    for (double theta : r.roots) {
+      if (in_bins(theta, bins))
+        near.push_back(theta);
+      else
+        ++stats.culled;
+    }
+    return near;
+  }
+
+  bool in_bins(double theta, const std::vector<int>& bins) const {
+    const double slack = ctx_.pair.tol.critical_angle;
+    return std::any_of(bins.begin(), bins.end(),
+                       [&](int b) { return ctx_.binning.contains(b, theta, slack); });
   }
 
   // ---- Validation: the configuration lies on the contact segments --------------------
@@ -205,8 +168,8 @@ class CriticalFinder {
   const std::vector<ContactSegment>& segments_of(int family, double theta,
                                                  std::vector<ContactSegment>& out) const {
     out.clear();
-    const ContactFamily& f = families_[family];
-    add_pair_contacts(pair_, moving_[f.moving], fixed_[f.fixed], theta, out);
+    const ContactFamily& f = ctx_.families[family];
+    add_pair_contacts(ctx_.pair, ctx_.moving[f.moving], ctx_.fixed[f.fixed], theta, out);
     return out;
   }
 
@@ -218,7 +181,7 @@ class CriticalFinder {
   };
   Nearness nearness(int family, double theta, Vec2 x) {
     Nearness n;
-    const double tol = pair_.tol.criticality;
+    const double tol = ctx_.pair.tol.criticality;
     for (const ContactSegment& s : segments_of(family, theta, scratch_)) {
       n.on_segment |= distance_to_curve(s.curve, x) <= tol;
       n.at_end |= std::min(distance(s.curve.from, x), distance(s.curve.to, x)) <= tol;
@@ -229,27 +192,28 @@ class CriticalFinder {
   // A cheap first test: every family involved exists at theta.
   bool all_alive(std::initializer_list<int> fams, double theta) const {
     for (int f : fams)
-      if (!alive_at(families_[f], theta, pair_.tol.critical_angle)) return false;
+      if (!alive_at(ctx_.families[f], theta, ctx_.pair.tol.critical_angle)) return false;
     return true;
   }
 
   void add_endpoint(int a, int end, int b, double theta) {
     if (!all_alive({a, b}, theta)) return reject();
-    const Vec2 x = families_[a].ends[end].at(theta);
+    const Vec2 x = ctx_.families[a].ends[end].at(theta);
     if (!nearness(a, theta, x).at_end || !nearness(b, theta, x).on_segment) return reject();
-    keep_point(CriticalCondition::endpoint, {a, b}, theta, x);
+    found.push_back({CriticalCondition::endpoint, {a, b, -1}, 2, theta, x});
   }
 
   void add_tangent(int a, int b, double theta) {
     if (!all_alive({a, b}, theta)) return reject();
-    const Vec2 x = tangent_point(equations_[a], equations_[b], theta);
+    const Vec2 x = tangent_point(ctx_.equations[a], ctx_.equations[b], theta);
     if (!nearness(a, theta, x).on_segment || !nearness(b, theta, x).on_segment) return reject();
-    keep_point(CriticalCondition::tangent, {a, b}, theta, x);
+    found.push_back({CriticalCondition::tangent, {a, b, -1}, 2, theta, x});
   }
 
   void add_triple(int a, int b, int c, double theta) {
     if (!all_alive({a, b, c}, theta)) return reject();
-    const std::optional<Vec2> x = triple_point(equations_[a], equations_[b], equations_[c], theta);
+    const auto& eq = ctx_.equations;
+    const std::optional<Vec2> x = triple_point(eq[a], eq[b], eq[c], theta);
     if (!x) return reject();
     // Three curves through the end of one of them is an endpoint event, which its own
     // (better conditioned) equation finds; the triple equation there is near-degenerate
@@ -261,87 +225,72 @@ class CriticalFinder {
       at_an_end |= n.at_end;
     }
     if (at_an_end) return reject();
-    keep_point(CriticalCondition::triple, {a, b, c}, theta, *x);
+    found.push_back({CriticalCondition::triple, {a, b, c}, 3, theta, *x});
   }
 
-  void reject() { ++set_.stats.off_segment; }
+  void reject() { ++stats.off_segment; }
 
-  // ---- Screening: criticalities inside blocked space change nothing --------------------
+  // ---- Probing pieces of contact segments --------------------------------------------
 
-  bool blocked_at(Vec2 x, double theta) {
-    // Several equations find one event (an end of a on b and of b on a, a vertex with both
-    // its edges): test each configuration once.
-    const double cell = pair_.tol.criticality;
-    const std::array<long long, 3> key{std::llround(theta / pair_.tol.critical_angle),
+  // blocked(), remembered per configuration cell within a bin (several probes coincide:
+  // the ends of adjoining segments, one switch seen by several families).
+  bool blocked_cached(Vec2 x, double theta) {
+    const double cell = ctx_.pair.tol.criticality;
+    const std::array<long long, 3> key{std::llround(theta / ctx_.pair.tol.critical_angle),
                                        std::llround(x.x / cell), std::llround(x.y / cell)};
-    if (auto it = screened_.find(key); it != screened_.end()) return it->second;
-    const bool b = tester_.blocked({x.x, x.y, theta});
-    screened_.emplace(key, b);
+    if (auto it = cache_.find(key); it != cache_.end()) return it->second;
+    const bool b = blocked(x, theta);
+    cache_.emplace(key, b);
     return b;
   }
 
-  void keep_point(CriticalCondition c, std::initializer_list<int> fams, double theta, Vec2 x) {
-    if (!options_.screen_blocked || !blocked_at(x, theta)) return keep(c, fams, theta, x);
-    if (fams.size() == 2 && bin_of(theta) != current_bin_) {
-      pending_[bin_of(theta)].push_back({c, *fams.begin(), *(fams.begin() + 1), theta, x});
-      return;
-    }
-    if (overlap_reaches_free(fams, theta)) return keep(c, fams, theta, x);
-    ++set_.stats.blocked;
+  bool any_free(const std::vector<Vec2>& probes, double theta) {
+    return std::any_of(probes.begin(), probes.end(),
+                       [&](Vec2 p) { return !blocked_cached(p, theta); });
   }
 
-  // Two contact segments that overlap at theta (parallel edges brought into line, equal
-  // circles) change along the whole shared piece, not only at the point found: probe it.
-  bool overlap_reaches_free(std::initializer_list<int> fams, double theta) {
-    if (fams.size() != 2) return false;
+  bool overlap_reaches_free(const Candidate& c, const std::vector<BinEntry>& bin) {
+    if (c.count != 2) return false;
     std::vector<ContactSegment> a, b;
-    segments_of(*fams.begin(), theta, a);
-    segments_of(*(fams.begin() + 1), theta, b);
+    segments_of(c.families[0], c.theta, a);
+    segments_of(c.families[1], c.theta, b);
     std::vector<Vec2> probes;
     for (const ContactSegment& sa : a)
       for (const ContactSegment& sb : b)
-        if (intersect(sa.curve, sb.curve, pair_.tol.geometric).kind ==
+        if (intersect(sa.curve, sb.curve, ctx_.pair.tol.geometric).kind ==
             IntersectionKind::overlapping)
-          add_piece_probes(*fams.begin(), sa.curve, theta, probes);
-    return std::any_of(probes.begin(), probes.end(), [&](Vec2 p) { return !blocked_at(p, theta); });
+          add_piece_probes(c.families[0], sa.curve, c.theta, bin, probes);
+    return any_free(probes, c.theta);
   }
 
   // A contact segment appearing, vanishing or switching ends matters only if some of it is
   // outside blocked space. Other contact segments cut it into pieces each wholly blocked or
   // not, so its ends and the pieces' midpoints decide (a piece free at a single crossing
   // point only would be a degenerate contact, which the crossing's own criticalities see).
-  void add_segment_end(int family, double theta) {
+  bool segment_end_reaches_free(const Candidate& c, const std::vector<BinEntry>& bin) {
+    const int family = c.families[0];
     std::vector<ContactSegment> own;
-    segments_of(family, theta, own);
+    segments_of(family, c.theta, own);
     // Cheap probes first (the ends and each segment's middle); cutting into pieces only when
     // those are all blocked.
     std::vector<Vec2> probes;
-    for (const MovingPoint& e : families_[family].ends) probes.push_back(e.at(theta));
+    for (const MovingPoint& e : ctx_.families[family].ends) probes.push_back(e.at(c.theta));
     for (const ContactSegment& s : own) probes.push_back(point_at(s.curve, 0.5));
-    const Vec2 at = probes.front();
-    auto all_blocked = [&] {
-      return std::all_of(probes.begin(), probes.end(),
-                         [&](Vec2 p) { return blocked_at(p, theta); });
-    };
-    if (options_.screen_blocked && all_blocked()) {
-      probes.clear();
-      for (const ContactSegment& s : own) add_piece_probes(family, s.curve, theta, probes);
-      if (all_blocked()) {
-        ++set_.stats.blocked;
-        return;
-      }
-    }
-    keep(CriticalCondition::segment_end, {family}, theta, at);
+    if (any_free(probes, c.theta)) return true;
+    probes.clear();
+    for (const ContactSegment& s : own) add_piece_probes(family, s.curve, c.theta, bin, probes);
+    return any_free(probes, c.theta);
   }
 
-  void add_piece_probes(int family, const Curve& curve, double theta, std::vector<Vec2>& probes) {
+  void add_piece_probes(int family, const Curve& curve, double theta,
+                        const std::vector<BinEntry>& bin, std::vector<Vec2>& probes) {
     std::vector<double> cuts = {0.0, 1.0};
-    const Box box = bounding_box(curve).inflated(pair_.tol.criticality);
+    const Box box = bounding_box(curve).inflated(ctx_.pair.tol.criticality);
     std::vector<ContactSegment> others;
-    for (const BinEntry& n : bin_) {
+    for (const BinEntry& n : bin) {
       if (n.family == family || !n.box.overlaps(box)) continue;
       for (const ContactSegment& s : segments_of(n.family, theta, others)) {
-        const Intersection hit = intersect(curve, s.curve, pair_.tol.geometric);
+        const Intersection hit = intersect(curve, s.curve, ctx_.pair.tol.geometric);
         for (int h = 0; h < hit.count; ++h) {
           cuts.push_back(hit.hits[h].ta0);
           cuts.push_back(hit.hits[h].ta1);
@@ -353,26 +302,161 @@ class CriticalFinder {
       if (cuts[k + 1] > cuts[k]) probes.push_back(point_at(curve, 0.5 * (cuts[k] + cuts[k + 1])));
   }
 
-  void keep(CriticalCondition c, std::initializer_list<int> fams, double theta, Vec2 x) {
+  const Context& ctx_;
+  PlacementTester tester_;
+  std::vector<ContactSegment> scratch_;
+  std::map<std::array<long long, 3>, bool> cache_;
+};
+
+class CriticalFinder {
+ public:
+  CriticalFinder(const Pair& pair, const CriticalOptions& options)
+      : ctx_(pair, options), workers_([this] { return std::make_unique<Worker>(ctx_); }) {
+    set_.stats.families = int(ctx_.families.size());
+  }
+
+  CriticalSet run() {
+    auto [pairs, triples] = meet();
+    solve(pairs, triples);
+    std::vector<Candidate> found;
+    for (auto& w : workers_) {
+      found.insert(found.end(), w->found.begin(), w->found.end());
+      w->found.clear();
+    }
+    add_switches(found);
+    std::sort(found.begin(), found.end(), before);
+    const std::vector<char> keep = screen(found);
+    for (auto& w : workers_) add_stats(w->stats);
+    for (size_t i = 0; i < found.size(); ++i)
+      if (keep[i]) kept_.push_back(criticality(found[i]));
+    set_.stats.blocked = long(found.size() - kept_.size());
+    group();
+    return std::move(set_);
+  }
+
+ private:
+  using Workers = tbb::enumerable_thread_specific<std::unique_ptr<Worker>>;
+
+  // Pass 1: the pairs and triples that may meet, with their bins.
+  std::pair<std::vector<MeetingTask>, std::vector<MeetingTask>> meet() {
+    struct Found {
+      std::vector<MeetingCandidate> pairs, triples;
+    };
+    tbb::enumerable_thread_specific<Found> per_thread;
+    tbb::parallel_for(0, ctx_.binning.count, [&](int b) {
+      Found& f = per_thread.local();
+      meeting_candidates(ctx_.entries(b), b, ctx_.pair.tol.geometric, ctx_.pair.tol.size, f.pairs,
+                         f.triples);
+    });
+    std::vector<MeetingCandidate> pairs, triples;
+    for (Found& f : per_thread) {
+      pairs.insert(pairs.end(), f.pairs.begin(), f.pairs.end());
+      triples.insert(triples.end(), f.triples.begin(), f.triples.end());
+    }
+    return {group_candidates(pairs), group_candidates(triples)};
+  }
+
+  // Pass 2: every pair and triple solved and its roots validated.
+  void solve(const std::vector<MeetingTask>& pairs, const std::vector<MeetingTask>& triples) {
+    const size_t n = pairs.size() + triples.size();
+    tbb::parallel_for(size_t(0), n, [&](size_t i) {
+      Worker& w = *workers_.local();
+      if (i < pairs.size())
+        w.solve_pair(pairs[i]);
+      else
+        w.solve_triple(triples[i - pairs.size()]);
+    });
+  }
+
+  // Condition 2 needs no equation: the switches are known per family.
+  void add_switches(std::vector<Candidate>& found) const {
+    for (size_t i = 0; i < ctx_.families.size(); ++i)
+      for (double theta : ctx_.families[i].switches)
+        found.push_back({CriticalCondition::segment_end,
+                         {int(i), -1, -1},
+                         1,
+                         theta,
+                         ctx_.families[i].ends.front().at(theta)});
+  }
+
+  // Pass 3: which candidates (sorted) to keep.
+  std::vector<char> screen(const std::vector<Candidate>& found) {
+    std::vector<char> keep(found.size(), 1);
+    if (!ctx_.options.screen_blocked) return keep;
+    // Point criticalities: each distinct configuration cell tested once, by the first
+    // candidate in it (several equations find one event: an end of a on b and of b on a, a
+    // vertex with both its edges).
+    const double cell = ctx_.pair.tol.criticality, turn = ctx_.pair.tol.critical_angle;
+    using Key = std::array<long long, 3>;
+    std::vector<std::pair<Key, size_t>> keys;
+    for (size_t i = 0; i < found.size(); ++i)
+      if (found[i].condition != CriticalCondition::segment_end)
+        keys.push_back({{std::llround(found[i].theta / turn), std::llround(found[i].at.x / cell),
+                         std::llround(found[i].at.y / cell)},
+                        i});
+    std::sort(keys.begin(), keys.end());
+    std::vector<size_t> firsts;  // indices into keys where a new key starts
+    for (size_t k = 0; k < keys.size(); ++k)
+      if (k == 0 || keys[k].first != keys[k - 1].first) firsts.push_back(k);
+    std::vector<char> blocked(firsts.size());
+    tbb::parallel_for(size_t(0), firsts.size(), [&](size_t g) {
+      const Candidate& c = found[keys[firsts[g]].second];
+      blocked[g] = workers_.local()->blocked(c.at, c.theta);
+    });
+    // Blocked candidates that may still reach free space, and every segment end, are
+    // probed along their contact segments, grouped by bin (the probes cut by the bin's
+    // families).
+    std::vector<std::vector<size_t>> probe(ctx_.binning.count);
+    for (size_t g = 0, k = 0; k < keys.size(); ++k) {
+      if (g + 1 < firsts.size() && k == firsts[g + 1]) ++g;
+      if (!blocked[g]) continue;
+      const size_t i = keys[k].second;
+      keep[i] = 0;
+      if (found[i].count == 2) probe[ctx_.binning.bin_of(found[i].theta)].push_back(i);
+    }
+    for (size_t i = 0; i < found.size(); ++i)
+      if (found[i].condition == CriticalCondition::segment_end) {
+        keep[i] = 0;
+        probe[ctx_.binning.bin_of(found[i].theta)].push_back(i);
+      }
+    tbb::parallel_for(0, ctx_.binning.count, [&](int b) {
+      if (probe[b].empty()) return;
+      Worker& w = *workers_.local();
+      const std::vector<BinEntry> bin = ctx_.entries(b);
+      w.start_bin();
+      for (size_t i : probe[b]) keep[i] = w.reaches_free(found[i], bin);
+    });
+    return keep;
+  }
+
+  void add_stats(const CriticalStats& s) {
+    set_.stats.equations += s.equations;
+    set_.stats.roots += s.roots;
+    set_.stats.culled += s.culled;
+    set_.stats.off_segment += s.off_segment;
+  }
+
+  Criticality criticality(const Candidate& c) const {
     Criticality k;
-    k.theta = wrap_angle(theta);
-    k.condition = c;
-    k.at = x;
-    for (int f : fams) {
-      const ContactFamily& fam = families_[f];
+    k.theta = wrap_angle(c.theta);
+    k.condition = c.condition;
+    k.at = c.at;
+    for (int i = 0; i < c.count; ++i) {
+      const ContactFamily& fam = ctx_.families[c.families[i]];
       k.pairs.push_back({fam.moving, fam.fixed, fam.kind});
     }
-    kept_.push_back(std::move(k));
+    return k;
   }
 
   // ---- Grouping (paper section 9) -------------------------------------------------------
 
   void group() {
-    std::sort(kept_.begin(), kept_.end(),
-              [](const Criticality& a, const Criticality& b) { return a.theta < b.theta; });
+    // Stable: candidates were sorted by everything, so equal wrapped angles keep that order.
+    std::stable_sort(kept_.begin(), kept_.end(),
+                     [](const Criticality& a, const Criticality& b) { return a.theta < b.theta; });
     set_.stats.criticalities = long(kept_.size());
     for (const Criticality& k : kept_) ++set_.counts[int(k.condition)];
-    const double gap = pair_.tol.critical_angle;
+    const double gap = ctx_.pair.tol.critical_angle;
     // Groups as index ranges; a group straddling theta = -pi joins the last to the first.
     std::vector<size_t> starts;
     for (size_t i = 0; i < kept_.size(); ++i)
@@ -394,40 +478,22 @@ class CriticalFinder {
       o.theta = wrap_angle(0.5 * (lo + hi));
       set_.orientations.push_back(std::move(o));
     }
-    std::sort(set_.orientations.begin(), set_.orientations.end(),
-              [](const auto& a, const auto& b) { return a.theta < b.theta; });
+    std::stable_sort(set_.orientations.begin(), set_.orientations.end(),
+                     [](const auto& a, const auto& b) { return a.theta < b.theta; });
   }
 
-  const Pair& pair_;
-  CriticalOptions options_;
-  Pair screen_pair_;
-  PlacementTester tester_;
-  std::vector<ContactFeature> moving_, fixed_;
-  std::vector<ContactFamily> families_;
-  std::vector<FamilyEquation> equations_;
-  std::vector<BinEntry> bin_;  // the bin being solved
-  int current_bin_ = 0;
-  // Blocked point criticalities of two families whose overlap must still be probed, by bin.
-  struct Pending {
-    CriticalCondition condition;
-    int a, b;
-    double theta;
-    Vec2 at;
-  };
-  std::vector<std::vector<Pending>> pending_;
-  std::vector<std::vector<std::pair<int, double>>> switches_;  // (family, theta) per bin
-  double bin_width_ = kTwoPi;
-  std::unordered_set<uint64_t> solved_pairs_, solved_triples_;
-  std::vector<ContactSegment> scratch_;
+  Context ctx_;
+  Workers workers_;
   std::vector<Criticality> kept_;
-  std::map<std::array<long long, 3>, bool> screened_;  // blocked_at, by configuration cell
   CriticalSet set_;
 };
 
 }  // namespace
 
 CriticalSet critical_orientations(const Pair& pair, const CriticalOptions& options) {
-  return CriticalFinder(pair, options).run();
+  if (options.threads <= 0) return CriticalFinder(pair, options).run();
+  tbb::task_arena arena(options.threads);
+  return arena.execute([&] { return CriticalFinder(pair, options).run(); });
 }
 
 }  // namespace cslice

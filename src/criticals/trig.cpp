@@ -152,23 +152,41 @@ Vec2 evaluate(const TrigVec& v, double theta) {
 namespace {
 
 // ---- Real polynomials in t = tan(theta / 2) ---------------------------------------------
+//
+// Fixed capacity, no allocation: an equation of degree n in theta is one of degree 2n in t,
+// and every root search here runs thousands of times per pair of parts.
 
-using Poly = std::vector<double>;  // coefficients, lowest degree first
+constexpr int kMaxPolyDegree = 2 * Trig::kMaxDegree;
+
+struct Poly {
+  std::array<double, kMaxPolyDegree + 1> c{};  // coefficients, lowest degree first
+  int size = 0;                                // degree + 1; 0 for the zero polynomial
+};
+
+// Roots found in one interval: a polynomial of degree d has at most d.
+struct RootList {
+  std::array<double, kMaxPolyDegree + 1> t{};
+  int count = 0;
+  void push(double v) {
+    if (count < int(t.size())) t[count++] = v;
+  }
+};
 
 double eval(const Poly& p, double t) {
   double v = 0.0;
-  for (size_t i = p.size(); i-- > 0;) v = v * t + p[i];
+  for (int i = p.size; i-- > 0;) v = v * t + p.c[i];
   return v;
 }
 
 Poly derivative(const Poly& p) {
   Poly d;
-  for (size_t i = 1; i < p.size(); ++i) d.push_back(double(i) * p[i]);
+  for (int i = 1; i < p.size; ++i) d.c[i - 1] = double(i) * p.c[i];
+  d.size = std::max(p.size - 1, 0);
   return d;
 }
 
 void trim(Poly& p) {
-  while (!p.empty() && p.back() == 0.0) p.pop_back();
+  while (p.size > 0 && p.c[p.size - 1] == 0.0) --p.size;
 }
 
 // (1 + t^2)^n F(2 atan t): with e^{i.theta} = (1 + it)^2 / (1 + t^2), each harmonic
@@ -176,36 +194,26 @@ void trim(Poly& p) {
 Poly to_half_angle(const Trig& f) {
   const int n = f.degree();
   using C = std::complex<double>;
-  std::vector<std::vector<C>> one_plus_it(2 * n + 1);  // powers of (1 + it)
-  one_plus_it[0] = {C(1.0)};
-  for (int k = 1; k <= 2 * n; ++k) {
-    const auto& prev = one_plus_it[k - 1];
-    std::vector<C> next(prev.size() + 1);
-    for (size_t i = 0; i < prev.size(); ++i) {
-      next[i] += prev[i];
-      next[i + 1] += C(0.0, 1.0) * prev[i];
-    }
-    one_plus_it[k] = next;
-  }
-  std::vector<Poly> one_plus_t2(n + 1);  // powers of (1 + t^2)
-  one_plus_t2[0] = {1.0};
-  for (int k = 1; k <= n; ++k) {
-    Poly next(2 * k + 1, 0.0);
-    for (size_t i = 0; i < one_plus_t2[k - 1].size(); ++i) {
-      next[i] += one_plus_t2[k - 1][i];
-      next[i + 2] += one_plus_t2[k - 1][i];
-    }
-    one_plus_t2[k] = next;
-  }
-  Poly p(2 * n + 1, 0.0);
+  // w = (1 + it)^{2j}, built up two factors at a time; s = (1 + t^2)^{n - j}, built down.
+  std::array<C, kMaxPolyDegree + 1> w{};
+  w[0] = 1.0;
+  std::array<std::array<double, kMaxPolyDegree + 1>, Trig::kMaxDegree + 1> s{};
+  s[0][0] = 1.0;
+  for (int k = 1; k <= n; ++k)
+    for (int i = 0; i <= 2 * k; ++i)
+      s[k][i] = (i <= 2 * k - 2 ? s[k - 1][i] : 0.0) + (i >= 2 ? s[k - 1][i - 2] : 0.0);
+  Poly p;
+  p.size = 2 * n + 1;
   for (int j = 0; j <= n; ++j) {
+    if (j > 0)
+      for (int twice = 0; twice < 2; ++twice)
+        for (int i = 2 * j; i > 0; --i) w[i] += C(0.0, 1.0) * w[i - 1];
     const C fj(f.a[j], -f.b[j]);
-    const auto& w = one_plus_it[2 * j];
-    const Poly& s = one_plus_t2[n - j];
-    for (size_t i = 0; i < w.size(); ++i) {
+    const auto& sj = s[n - j];
+    for (int i = 0; i <= 2 * j; ++i) {
       const double c = (fj * w[i]).real();
       if (c == 0.0) continue;
-      for (size_t k = 0; k < s.size(); ++k) p[i + k] += c * s[k];
+      for (int k = 0; k <= 2 * (n - j); ++k) p.c[i + k] += c * sj[k];
     }
   }
   trim(p);
@@ -237,37 +245,37 @@ double refine_bracketed(const Poly& p, const Poly& dp, double lo, double hi) {
 
 double evaluation_bound(const Poly& p, double t) {
   double v = 0.0;
-  for (size_t i = p.size(); i-- > 0;) v = v * std::fabs(t) + std::fabs(p[i]);
+  for (int i = p.size; i-- > 0;) v = v * std::fabs(t) + std::fabs(p.c[i]);
   return v;
 }
 
 // Real roots of p in [lo, hi]: the roots of p' split the interval into pieces where p is
 // monotone, each holding at most one root; an extremum where p nearly vanishes is a double
 // root that no sign change reveals. `touch` is relative to the evaluation bound.
-void real_roots(const Poly& p, double lo, double hi, double touch, std::vector<double>& out,
-                std::vector<double>* double_roots) {
-  if (p.size() <= 1) return;
-  if (p.size() == 2) {
-    const double t = -p[0] / p[1];
-    if (t >= lo && t <= hi) out.push_back(t);
+void real_roots(const Poly& p, double lo, double hi, double touch, RootList& out,
+                RootList* double_roots) {
+  if (p.size <= 1) return;
+  if (p.size == 2) {
+    const double t = -p.c[0] / p.c[1];
+    if (t >= lo && t <= hi) out.push(t);
     return;
   }
   const Poly dp = derivative(p);
-  std::vector<double> turns;
+  RootList turns;
   real_roots(dp, lo, hi, touch, turns, nullptr);
-  std::sort(turns.begin(), turns.end());
+  std::sort(turns.t.begin(), turns.t.begin() + turns.count);
+  turns.push(hi);
   double x0 = lo, f0 = eval(p, lo);
-  if (f0 == 0.0) out.push_back(lo);
-  turns.push_back(hi);
-  for (size_t i = 0; i < turns.size(); ++i) {
-    const double x1 = turns[i], f1 = eval(p, x1);
+  if (f0 == 0.0) out.push(lo);
+  for (int i = 0; i < turns.count; ++i) {
+    const double x1 = turns.t[i], f1 = eval(p, x1);
     if (f1 == 0.0) {
-      out.push_back(x1);
+      out.push(x1);
     } else if (f0 != 0.0 && (f0 < 0.0) != (f1 < 0.0)) {
-      out.push_back(refine_bracketed(p, dp, x0, x1));
-    } else if (double_roots && i + 1 < turns.size() &&
+      out.push(refine_bracketed(p, dp, x0, x1));
+    } else if (double_roots && i + 1 < turns.count &&
                std::fabs(f1) <= touch * evaluation_bound(p, x1)) {
-      double_roots->push_back(x1);
+      double_roots->push(x1);
     }
     x0 = x1;
     f0 = f1;
@@ -360,12 +368,13 @@ TrigRoots trig_roots(const Trig& raw, double zero_norm, double touch, double mer
   for (int chart = 0; chart < 2; ++chart) {
     const Trig g = chart == 0 ? f : f.half_turned();
     const Poly p = to_half_angle(g);
-    std::vector<double> simple, twofold;
+    RootList simple, twofold;
     real_roots(p, -1.0, 1.0, touch, simple, &twofold);
     const double shift = chart == 0 ? 0.0 : kPi;
-    for (double t : simple)
-      r.roots.push_back(wrap_angle(polish_root(f, 2.0 * std::atan(t) + shift)));
-    for (double t : twofold) {
+    for (int i = 0; i < simple.count; ++i)
+      r.roots.push_back(wrap_angle(polish_root(f, 2.0 * std::atan(simple.t[i]) + shift)));
+    for (int i = 0; i < twofold.count; ++i) {
+      const double t = twofold.t[i];
       const double theta = wrap_angle(polish_extremum(f, 2.0 * std::atan(t) + shift));
       if (std::fabs(f(theta)) <= touch * n) r.roots.push_back(theta);
     }

@@ -154,7 +154,9 @@ std::vector<SegmentLabel> realizable_labels(const Slice& slice) {
 SlicedSpace compute_space(const Pair& pair, const SpaceOptions& options) {
   SlicedSpace space;
   auto start = std::chrono::steady_clock::now();
-  space.criticals = critical_orientations(pair, options.critical);
+  CriticalOptions critical = options.critical;
+  if (critical.threads == 0) critical.threads = options.threads;
+  space.criticals = critical_orientations(pair, critical);
   space.seconds_criticals = seconds_since(start);
 
   start = std::chrono::steady_clock::now();

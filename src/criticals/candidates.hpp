@@ -1,0 +1,65 @@
+// Which pairs and triples of contact families can meet, and at which orientations: theta is
+// cut into bins, each family alive in a bin gets its cover at the bin's middle and a margin
+// for how far its contact segments drift within the bin, and only families whose covers come
+// within their margins are paired (a sweep along x). A pair or triple remembers the bins
+// where it may meet, so that a root of its equation elsewhere is dropped unvalidated.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "criticals/families.hpp"
+
+namespace cslice {
+
+// Equal bins over [-pi, pi).
+struct Binning {
+  int count = 1;
+  double width = kTwoPi;
+
+  explicit Binning(int bins);
+  int bin_of(double theta) const;
+  double lower(int bin) const { return -kPi + bin * width; }
+  // Whether theta lies in the closed bin, widened by `slack` radians (cyclically).
+  bool contains(int bin, double theta, double slack) const;
+};
+
+// A family alive in a bin: its cover at the bin's middle orientation, how far its contact
+// segments can stray from that cover within the bin, and the box holding them all.
+struct BinEntry {
+  int family = 0;
+  Curve cover;
+  double margin = 0.0;
+  Box box;
+};
+
+// The families alive in each bin (indices, ascending).
+std::vector<std::vector<int>> alive_families_by_bin(const std::vector<ContactFamily>& families,
+                                                    const Binning& binning);
+
+// The entries of one bin, sorted by the left side of their boxes.
+std::vector<BinEntry> bin_entries(const std::vector<ContactFamily>& families,
+                                  const std::vector<int>& alive, const Binning& binning, int bin,
+                                  double tolerance);
+
+// A pair (c = -1) or triple of family indices, ascending, and a bin where they may meet.
+struct MeetingCandidate {
+  int a = 0, b = 0, c = -1;
+  int bin = 0;
+  friend auto operator<=>(const MeetingCandidate&, const MeetingCandidate&) = default;
+};
+
+// The pairs and triples of one bin's entries that may meet within it. `size` is the pair's
+// size (a crossing so shallow that it could drift across all of it gives no bound).
+void meeting_candidates(const std::vector<BinEntry>& entries, int bin, double geometric,
+                        double size, std::vector<MeetingCandidate>& pairs,
+                        std::vector<MeetingCandidate>& triples);
+
+// Candidates grouped: each distinct pair or triple once, with the bins where it may meet.
+struct MeetingTask {
+  int a = 0, b = 0, c = -1;
+  std::vector<int> bins;  // ascending
+};
+std::vector<MeetingTask> group_candidates(std::vector<MeetingCandidate>& candidates);
+
+}  // namespace cslice
