@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -235,6 +236,27 @@ TEST_F(SpaceCli, ThreadCountChangesOnlyTheTiming) {
   ja.erase("timing");
   jb.erase("timing");
   EXPECT_EQ(ja.dump(), jb.dump());
+}
+
+TEST_F(SpaceCli, ProgressShowsOnATerminalOnly) {
+  const std::string out = (dir_ / "space.json").string();
+  const testkit::RunResult piped = compute(testkit::example_path("cam"), out);
+  ASSERT_EQ(piped.status, 0);
+  EXPECT_EQ(piped.err, "");
+  // script(1) (util-linux, in every Debian) gives the command a terminal; its output is what
+  // the terminal showed.
+  const std::string command = testkit::quoted(CSLICE_CLI_PATH) + " compute " +
+                              testkit::quoted(testkit::example_path("cam")) + " -o " +
+                              testkit::quoted(out);
+  const std::string log = (dir_ / "terminal.txt").string();
+  ASSERT_EQ(std::system(("script -qec " + testkit::quoted(command) + " /dev/null > " +
+                         testkit::quoted(log) + " 2>&1 < /dev/null")
+                            .c_str()),
+            0);
+  const std::string shown = testkit::read_file(log);
+  EXPECT_NE(shown.find("cslice compute: critical orientations"), std::string::npos) << shown;
+  EXPECT_NE(shown.find("cslice compute: slices"), std::string::npos) << shown;
+  EXPECT_NE(shown.find("\033[K"), std::string::npos) << "the line is cleared at the end";
 }
 
 TEST_F(SpaceCli, BadInputExitsTwoWithNoFile) {

@@ -4,6 +4,8 @@
 // between neighbours stays within the pair's contact tolerance (docs/space-format.md).
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -137,9 +139,15 @@ struct SpaceTopology {
   TopologyChecks checks;
 };
 
+// Reports how far a long computation has come: a stage's name and its units done out of
+// total. Called from worker threads, possibly at once: it must be thread-safe.
+using ProgressReport =
+    std::function<void(std::string_view stage, std::size_t done, std::size_t total)>;
+
 struct SpaceOptions {
   CriticalOptions critical;
-  int threads = 0;  // slices computed at once; 0 lets oneTBB choose (every core)
+  int threads = 0;          // slices computed at once; 0 lets oneTBB choose (every core)
+  ProgressReport progress;  // optional
 };
 
 struct SlicedSpace {

@@ -1,8 +1,10 @@
 // `cslice compute PAIR.json -o SPACE.json [--threads N]`: the sliced configuration space of a
 // pair (critical orientations, slices, correspondence), as JSON (docs/space-format.md).
 #include <memory>
+#include <optional>
 
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "cslice/space.hpp"
 
 namespace cslice::cli {
@@ -20,7 +22,10 @@ void run(const ComputeCommand& cmd) {
   if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
   SpaceOptions options;
   options.threads = cmd.threads;
+  std::optional<ProgressLine> progress(std::in_place, "cslice compute");
+  options.progress = progress->report();
   const SlicedSpace space = compute_space(pair, options);
+  progress.reset();  // the line is cleared before any message
   deliver_outputs({{cmd.out_path, space_to_json(pair, space)}});
 }
 

@@ -5,6 +5,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <atomic>
 
 #include <algorithm>
 #include <chrono>
@@ -75,11 +76,14 @@ std::vector<Planned> plan_slices(const CriticalSet& criticals, double step) {
 // Each slice depends only on the pair and its theta and is stored at its own index, so the
 // result is the same whatever the number of threads or the order they run in.
 std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Planned>& plan,
-                                       int threads) {
+                                       int threads, const ProgressReport& progress) {
   std::vector<SpaceSlice> out(plan.size());
+  std::atomic<size_t> done = 0;
   const auto body = [&](const tbb::blocked_range<size_t>& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i)
+    for (size_t i = range.begin(); i != range.end(); ++i) {
       out[i] = {plan[i].theta, plan[i].kind, plan[i].interval, compute_slice(pair, plan[i].theta)};
+      if (progress) progress("slices", ++done, plan.size());
+    }
   };
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   // Grain 1: slices differ widely in cost, so let the scheduler balance single slices.
@@ -154,18 +158,25 @@ std::vector<SegmentLabel> realizable_labels(const Slice& slice) {
 SlicedSpace compute_space(const Pair& pair, const SpaceOptions& options) {
   SlicedSpace space;
   auto start = std::chrono::steady_clock::now();
+  const auto report = [&](std::string_view stage, size_t done, size_t total) {
+    if (options.progress) options.progress(stage, done, total);
+  };
   CriticalOptions critical = options.critical;
   if (critical.threads == 0) critical.threads = options.threads;
+  report("critical orientations", 0, 1);
   space.criticals = critical_orientations(pair, critical);
   space.seconds_criticals = seconds_since(start);
+  report("critical orientations", 1, 1);
 
   start = std::chrono::steady_clock::now();
   space.reach = contact_reach(pair);
   space.max_step = interpolation_step(space.reach, pair.tol.contact);
   space.slices = detail::compute_slices(pair, detail::plan_slices(space.criticals, space.max_step),
-                                        options.threads);
+                                        options.threads, options.progress);
   space.correspondence = detail::slice_correspondences(space.slices);
+  report("topology", 0, 1);
   space.topology = compute_topology(pair, space, options.threads);
+  report("topology", 1, 1);
   space.seconds_slices = seconds_since(start);
   return space;
 }

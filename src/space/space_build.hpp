@@ -22,7 +22,7 @@ std::vector<PlannedSlice> plan_slices(const CriticalSet& criticals, double step)
 // The slices at the planned orientations, in parallel (`threads` as in SpaceOptions), each
 // stored at its own index: the same whatever the thread count.
 std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<PlannedSlice>& plan,
-                                       int threads);
+                                       int threads, const ProgressReport& progress = {});
 
 // Slice i to slice i + 1, and the last back to the first.
 std::vector<SliceCorrespondence> slice_correspondences(const std::vector<SpaceSlice>& slices);
