@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <tuple>
 
 namespace cslice {
 
@@ -149,16 +150,63 @@ void meeting_candidates(const std::vector<BinEntry>& entries, int bin, double ge
     }
 }
 
+void MeetingTask::add_run(int first, int last) {
+  if (run_count > 0 && runs[run_count - 1][1] + 1 >= first) {
+    runs[run_count - 1][1] = std::max(runs[run_count - 1][1], last);
+  } else if (run_count < 2) {
+    runs[run_count++] = {first, last};
+  } else {
+    runs[1][1] = last;
+  }
+}
+
+bool MeetingTask::near(const Binning& binning, double theta, double slack) const {
+  for (int r = 0; r < run_count; ++r) {
+    double d = std::fmod(theta - binning.lower(runs[r][0]), kTwoPi);
+    if (d < 0.0) d += kTwoPi;
+    const double span = (runs[r][1] - runs[r][0] + 1) * binning.width;
+    if (d <= span + slack || d >= kTwoPi - slack) return true;
+  }
+  return false;
+}
+
+namespace {
+bool same_family_set(const MeetingTask& t, const MeetingCandidate& m) {
+  return t.a == m.a && t.b == m.b && t.c == m.c;
+}
+bool task_before(const MeetingTask& x, const MeetingTask& y) {
+  return std::tie(x.a, x.b, x.c) < std::tie(y.a, y.b, y.c);
+}
+}  // namespace
+
 std::vector<MeetingTask> group_candidates(std::vector<MeetingCandidate>& candidates) {
   std::sort(candidates.begin(), candidates.end());
   std::vector<MeetingTask> tasks;
   for (const MeetingCandidate& m : candidates) {
-    if (tasks.empty() || tasks.back().a != m.a || tasks.back().b != m.b || tasks.back().c != m.c)
-      tasks.push_back({m.a, m.b, m.c, {}});
-    if (tasks.back().bins.empty() || tasks.back().bins.back() != m.bin)
-      tasks.back().bins.push_back(m.bin);
+    if (tasks.empty() || !same_family_set(tasks.back(), m)) tasks.push_back({m.a, m.b, m.c});
+    tasks.back().add_bin(m.bin);
   }
   return tasks;
+}
+
+void merge_tasks(std::vector<MeetingTask>& tasks, const std::vector<MeetingTask>& later) {
+  std::vector<MeetingTask> out;
+  out.reserve(tasks.size() + later.size());
+  size_t i = 0, j = 0;
+  while (i < tasks.size() || j < later.size()) {
+    if (j == later.size() || (i < tasks.size() && task_before(tasks[i], later[j]))) {
+      out.push_back(tasks[i++]);
+    } else if (i == tasks.size() || task_before(later[j], tasks[i])) {
+      out.push_back(later[j++]);
+    } else {
+      MeetingTask t = tasks[i++];
+      for (int r = 0; r < later[j].run_count; ++r)
+        t.add_run(later[j].runs[r][0], later[j].runs[r][1]);
+      ++j;
+      out.push_back(t);
+    }
+  }
+  tasks = std::move(out);
 }
 
 }  // namespace cslice

@@ -5,6 +5,7 @@
 // where it may meet, so that a root of its equation elsewhere is dropped unvalidated.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -55,11 +56,25 @@ void meeting_candidates(const std::vector<BinEntry>& entries, int bin, double ge
                         double size, std::vector<MeetingCandidate>& pairs,
                         std::vector<MeetingCandidate>& triples);
 
-// Candidates grouped: each distinct pair or triple once, with the bins where it may meet.
+// Candidates grouped: each distinct pair or triple once, with the bins where it may meet as
+// at most two runs of consecutive bins (fixed size: there are millions of triples on large
+// pairs). A third run merges into the second, gap included: more bins, never fewer.
 struct MeetingTask {
   int a = 0, b = 0, c = -1;
-  std::vector<int> bins;  // ascending
+  std::array<std::array<int, 2>, 2> runs{};  // [first, last] bins, ascending
+  int run_count = 0;
+
+  // Bins arrive in ascending order.
+  void add_run(int first, int last);
+  void add_bin(int bin) { add_run(bin, bin); }
+  // Whether theta lies in one of the runs, widened by `slack` radians.
+  bool near(const Binning& binning, double theta, double slack) const;
 };
+
+// Sorted by (a, b, c); `candidates` is sorted on the way.
 std::vector<MeetingTask> group_candidates(std::vector<MeetingCandidate>& candidates);
+
+// Merges `later` (whose bins all come after those of `tasks`) into `tasks`, both sorted.
+void merge_tasks(std::vector<MeetingTask>& tasks, const std::vector<MeetingTask>& later);
 
 }  // namespace cslice

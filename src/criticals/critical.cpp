@@ -112,17 +112,17 @@ class Worker {
     for (auto [a, b] : {std::pair{t.a, t.b}, std::pair{t.b, t.a}})
       for (size_t e = 0; e < ctx_.families[a].ends.size(); ++e)
         for (double theta :
-             roots(endpoint_equation(ctx_.families[a].ends[e], ctx_.equations[b]), t.bins))
+             roots(endpoint_equation(ctx_.families[a].ends[e], ctx_.equations[b]), t))
           add_endpoint(a, int(e), b, theta);
     std::array<EventEquation, 2> tangents;
     const int n = tangent_equations(ctx_.equations[t.a], ctx_.equations[t.b], tangents);
     for (int k = 0; k < n; ++k)
-      for (double theta : roots(tangents[k], t.bins)) add_tangent(t.a, t.b, theta);
+      for (double theta : roots(tangents[k], t)) add_tangent(t.a, t.b, theta);
   }
 
   void solve_triple(const MeetingTask& t) {
     const auto& eq = ctx_.equations;
-    for (double theta : roots(triple_equation(eq[t.a], eq[t.b], eq[t.c]), t.bins))
+    for (double theta : roots(triple_equation(eq[t.a], eq[t.b], eq[t.c]), t))
       add_triple(t.a, t.b, t.c, theta);
   }
 
@@ -142,25 +142,19 @@ class Worker {
   }
 
  private:
-  std::vector<double> roots(const EventEquation& eq, const std::vector<int>& bins) {
+  std::vector<double> roots(const EventEquation& eq, const MeetingTask& task) {
     ++stats.equations;
     const TrigRoots r = trig_roots(eq.f, kRelativeGeometricEpsilon * eq.magnitude,
                                    kRelativeGeometricEpsilon, ctx_.pair.tol.angular);
     stats.roots += long(r.roots.size());
     std::vector<double> near;
     for (double theta : r.roots) {
-      if (in_bins(theta, bins))
+      if (task.near(ctx_.binning, theta, ctx_.pair.tol.critical_angle))
         near.push_back(theta);
       else
         ++stats.culled;
     }
     return near;
-  }
-
-  bool in_bins(double theta, const std::vector<int>& bins) const {
-    const double slack = ctx_.pair.tol.critical_angle;
-    return std::any_of(bins.begin(), bins.end(),
-                       [&](int b) { return ctx_.binning.contains(b, theta, slack); });
   }
 
   // ---- Validation: the configuration lies on the contact segments --------------------
@@ -337,23 +331,31 @@ class CriticalFinder {
  private:
   using Workers = tbb::enumerable_thread_specific<std::unique_ptr<Worker>>;
 
-  // Pass 1: the pairs and triples that may meet, with their bins.
+  // Pass 1: the pairs and triples that may meet, with their bins. Bins go in blocks, each
+  // block's candidates grouped and merged in before the next: a pair or triple meets in
+  // many bins, and the candidates of all bins at once would take gigabytes on large pairs.
   std::pair<std::vector<MeetingTask>, std::vector<MeetingTask>> meet() {
     struct Found {
       std::vector<MeetingCandidate> pairs, triples;
     };
-    tbb::enumerable_thread_specific<Found> per_thread;
-    tbb::parallel_for(0, ctx_.binning.count, [&](int b) {
-      Found& f = per_thread.local();
-      meeting_candidates(ctx_.entries(b), b, ctx_.pair.tol.geometric, ctx_.pair.tol.size, f.pairs,
-                         f.triples);
-    });
-    std::vector<MeetingCandidate> pairs, triples;
-    for (Found& f : per_thread) {
-      pairs.insert(pairs.end(), f.pairs.begin(), f.pairs.end());
-      triples.insert(triples.end(), f.triples.begin(), f.triples.end());
+    std::vector<MeetingTask> pairs, triples;
+    constexpr int kBlock = 64;
+    for (int first = 0; first < ctx_.binning.count; first += kBlock) {
+      tbb::enumerable_thread_specific<Found> per_thread;
+      tbb::parallel_for(first, std::min(first + kBlock, ctx_.binning.count), [&](int b) {
+        Found& f = per_thread.local();
+        meeting_candidates(ctx_.entries(b), b, ctx_.pair.tol.geometric, ctx_.pair.tol.size, f.pairs,
+                           f.triples);
+      });
+      std::vector<MeetingCandidate> block_pairs, block_triples;
+      for (Found& f : per_thread) {
+        block_pairs.insert(block_pairs.end(), f.pairs.begin(), f.pairs.end());
+        block_triples.insert(block_triples.end(), f.triples.begin(), f.triples.end());
+      }
+      merge_tasks(pairs, group_candidates(block_pairs));
+      merge_tasks(triples, group_candidates(block_triples));
     }
-    return {group_candidates(pairs), group_candidates(triples)};
+    return {std::move(pairs), std::move(triples)};
   }
 
   // Pass 2: every pair and triple solved and its roots validated.
