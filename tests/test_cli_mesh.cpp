@@ -2,6 +2,7 @@
 // part; bad arguments exit 2 and leave no file.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <sstream>
 
 #include "support/cli_run.hpp"
@@ -65,6 +66,28 @@ TEST_F(MeshCli, PartialReconstructionKeepsFewerTriangles) {
   const int some = count_lines_starting(testkit::read_file(part), "f ");
   EXPECT_GT(some, 0);
   EXPECT_LT(some, all);
+}
+
+// The part is clipped at the range and the box: every vertex of the OBJ inside both.
+TEST_F(MeshCli, PartialReconstructionIsClippedToTheRangeAndTheBox) {
+  const std::string s = space();
+  const fs::path part = dir_ / "part.obj";
+  ASSERT_EQ(
+      mesh(s, "-o " + testkit::quoted(part.string()) + " --theta -0.5,0.5 --box -1,-2,0.3,1.25")
+          .status,
+      0);
+  std::istringstream in(testkit::read_file(part));
+  int vertices = 0, outside = 0, on_cut = 0;
+  for (std::string line; std::getline(in, line);) {
+    double x, y, theta;
+    if (std::sscanf(line.c_str(), "v %lf %lf %lf", &x, &y, &theta) != 3) continue;
+    ++vertices;
+    outside += theta < -0.5 || theta > 0.5 || x < -1 || x > 0.3 || y < -2 || y > 1.25;
+    on_cut += theta == -0.5 || theta == 0.5 || x == 0.3 || y == 1.25;
+  }
+  EXPECT_GT(vertices, 0);
+  EXPECT_EQ(outside, 0);
+  EXPECT_GT(on_cut, 0);  // split along the cut, not stopped short of it
 }
 
 TEST_F(MeshCli, BadArgumentsExitTwoAndWriteNothing) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cslice/geometry.hpp"
@@ -24,6 +25,8 @@ struct Loop {
 };
 
 enum class FeatureKind { segment, arc, vertex };
+// "segment", "arc" or "vertex", as files and messages name them.
+std::string_view to_string(FeatureKind k);
 
 // Convexity of a feature seen from outside the material: a convex feature bulges out of the
 // part (counterclockwise arc, left-turning vertex), a concave one bends into it; a smooth

@@ -186,6 +186,10 @@ double side_slice_angle(const Tolerances& tol);
 // The labels of the realizable contact segments of a slice, sorted and without repeats.
 std::vector<SegmentLabel> realizable_labels(const Slice& slice);
 
+// The labels of the contact segments along a free component's boundary, one per piece,
+// sorted (repeats kept): what identifies a component from one slice to the next.
+std::vector<SegmentLabel> boundary_labels(const Slice& slice, const FreeComponent& component);
+
 // The version of the space file format that space_to_json writes and load_space reads.
 inline constexpr int kSpaceFormatVersion = 2;
 

@@ -33,6 +33,19 @@ inline constexpr double kCriticalityPerGeometric = 1e3;
 // transversal crossing they are then sqrt(1e3 / angular) ~ 3e4 times further apart still.
 inline constexpr double kSideSliceAngleSquaredPerAngular = kCriticalityPerGeometric;
 
+// The contact mesh (src/mesh, docs/mesh.md). A strip triangle spans a chord of a slice, longer
+// than the geometric epsilon (closer corners are one vertex), and the step in theta between
+// two slices, at least half the critical angle (consecutive critical orientations are further
+// apart, and an interval's slice lies between them): its area, in length x radians, is at
+// least half their product. Triangles below this fraction of geometric x critical_angle are
+// degenerate.
+inline constexpr double kMeshTriangleAreaPerEpsilonAngle = 0.25;
+// Cutting the mesh at a plane (the seam at theta = pi, partial reconstruction) first moves
+// onto the plane the vertices closer to it than this fraction of the critical angle (theta
+// planes) or of the geometric epsilon (x and y planes), so that no cut leaves a sliver thinner
+// than the slices themselves may be apart.
+inline constexpr double kMeshPlaneSnapPerTolerance = 0.5;
+
 struct Tolerances {
   // Length unit of the pair file (mm, in, ...). Base value everything scales with.
   double size = 1.0;

@@ -9,6 +9,18 @@
 
 namespace cslice {
 
+std::string_view to_string(FeatureKind k) {
+  switch (k) {
+    case FeatureKind::segment:
+      return "segment";
+    case FeatureKind::arc:
+      return "arc";
+    case FeatureKind::vertex:
+      return "vertex";
+  }
+  return "feature";
+}
+
 namespace {
 
 // Nesting depth of each loop: how many other loops enclose it. Disjoint simple loops are

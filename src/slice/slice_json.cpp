@@ -13,18 +13,6 @@ namespace {
 // Ordered so the output lists fields in the documented order.
 using json = nlohmann::ordered_json;
 
-const char* kind_word(FeatureKind k) {
-  switch (k) {
-    case FeatureKind::segment:
-      return "segment";
-    case FeatureKind::arc:
-      return "arc";
-    case FeatureKind::vertex:
-      return "vertex";
-  }
-  return "feature";
-}
-
 // The reader may reverse a loop (part.cpp, reverse_loop): new edge k is input edge n-1-k and
 // new vertex k is input vertex (n-k) mod n. Users know the file's numbering, so undo it.
 int input_index(const Loop& loop, const Feature& f) {
@@ -148,7 +136,7 @@ std::string describe_feature(const Part& part, int feature) {
   if (f.loop < 0 || f.loop >= static_cast<int>(part.loops.size()))
     return "feature " + std::to_string(feature);
   const Loop& loop = part.loops[f.loop];
-  return std::string(kind_word(f.kind)) + " " + std::to_string(input_index(loop, f)) + " of loop " +
+  return std::string(to_string(f.kind)) + " " + std::to_string(input_index(loop, f)) + " of loop " +
          std::to_string(loop.source_index);
 }
 

@@ -55,18 +55,6 @@ double offset_from(double start, double theta) {
   return d < 0 ? d + kTwoPi : d;
 }
 
-// Labels of the contact segments along a component's boundary, one per piece, sorted.
-std::vector<SegmentLabel> boundary_labels(const Slice& s, const FreeComponent& c) {
-  std::vector<SegmentLabel> out;
-  for (const auto& cycle : c.boundary)
-    for (const ContactPiece& piece : cycle) {
-      const ContactSegment& seg = s.contact_segments.at(piece.segment);
-      out.push_back({seg.moving_feature, seg.fixed_feature});
-    }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 int component_count(const Slice& s) {
   return static_cast<int>(s.free_components.size());
 }
@@ -579,6 +567,17 @@ double side_slice_angle(const Tolerances& tol) {
 
 SpaceTopology compute_topology(const Pair& pair, const SlicedSpace& space, int threads) {
   return TopologyBuilder(pair, space, threads).build();
+}
+
+std::vector<SegmentLabel> boundary_labels(const Slice& s, const FreeComponent& c) {
+  std::vector<SegmentLabel> out;
+  for (const auto& cycle : c.boundary)
+    for (const ContactPiece& piece : cycle) {
+      const ContactSegment& seg = s.contact_segments.at(piece.segment);
+      out.push_back({seg.moving_feature, seg.fixed_feature});
+    }
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 }  // namespace cslice
