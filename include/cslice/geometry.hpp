@@ -196,5 +196,8 @@ double distance_segment_segment(const Curve& a, const Curve& b);
 double distance_segment_arc(const Curve& segment, const Curve& arc);
 double distance_arc_arc(const Curve& a, const Curve& b);
 double distance_between(const Curve& a, const Curve& b);
+// Largest distance from p to a point of the curve: an endpoint, or for an arc the point of
+// its circle opposite p, when the arc passes through it.
+double farthest_distance(const Curve& c, Vec2 p);
 
 }  // namespace cslice

@@ -65,6 +65,7 @@ void register_compute(CLI::App& app);
 void register_stats(CLI::App& app);
 void register_analyze(CLI::App& app);
 void register_query(CLI::App& app);
+void register_path(CLI::App& app);
 void register_view(CLI::App& app);
 
 }  // namespace cslice::cli

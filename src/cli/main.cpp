@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   cslice::cli::register_stats(app);
   cslice::cli::register_analyze(app);
   cslice::cli::register_query(app);
+  cslice::cli::register_path(app);
   cslice::cli::register_view(app);
   try {
     app.parse(argc, argv);

@@ -82,4 +82,17 @@ double distance_between(const Curve& a, const Curve& b) {
   return a.is_segment() ? distance_segment_arc(a, b) : distance_segment_arc(b, a);
 }
 
+// The distance from p to a point of the circle is largest at the point opposite p (through
+// the centre); elsewhere on an arc it grows towards that point, so it is largest at an end.
+double farthest_distance(const Curve& c, Vec2 p) {
+  const double ends = std::max(distance(p, c.from), distance(p, c.to));
+  if (!c.is_arc()) return ends;
+  const Vec2 away = c.center - p;
+  const double d = length(away);
+  if (d == 0.0) return c.radius;
+  const Vec2 far = c.center + (c.radius / d) * away;
+  if (c.is_full_circle() || on_arc(c, far)) return std::max(ends, d + c.radius);
+  return ends;
+}
+
 }  // namespace cslice

@@ -1,0 +1,17 @@
+// Random free configurations for path tests and benchmarks (a plain source file, no
+// GoogleTest, so the benchmarks can share it).
+#pragma once
+
+#include <random>
+
+#include "cslice/classify.hpp"
+#include "cslice/slice.hpp"
+
+namespace cslice::testkit {
+
+// A random theta, a random free component of the slice there, a random point of it
+// (rejection in the box of its boundary, grown for an unbounded one), free by classify with
+// clearance above twice the contact tolerance.
+Pose random_free_pose(const Pair& pair, std::mt19937& rng);
+
+}  // namespace cslice::testkit
