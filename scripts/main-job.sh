@@ -2,8 +2,8 @@
 # The main job on the bundled examples: installs dependencies (as root), builds cslice, and
 # writes for every example its description (info), a picture of the placed pair and of its
 # configuration-space slice, its critical orientations, its sliced configuration space, the
-# analysis of it and its contact-surface mesh into out/, then the paper's run-time table
-# (out/stats.md).
+# analysis of it and its contact-surface mesh into out/, then queries and a path on the
+# computed spaces and the paper's run-time table (out/stats.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -30,10 +30,14 @@ for pair in examples/*.json; do
   "$cslice" compute "$pair" -o "out/$name-space.json"
   "$cslice" analyze "out/$name-space.json" > "out/$name-analysis.txt"
   "$cslice" mesh "out/$name-space.json" -o "out/$name-contact.ply"
-  echo "   pictures: out/$name.svg, out/$name-slice.svg; data: out/$name-{slice,critical,space}.json, out/$name-analysis.txt, out/$name-contact.ply"
+  "$cslice" view "out/$name-space.json" -o "out/$name-view.html"
+  echo "   pictures: out/$name.svg, out/$name-slice.svg, out/$name-view.html (3D, offline); data: out/$name-{slice,critical,space}.json, out/$name-analysis.txt, out/$name-contact.ply"
 done
 echo "== queries on the fixture's space: the engaging configuration, just below it, far away"
 printf '2.1 -0.7 0\n2.1 -0.75 0\n50 50 1\n' | "$cslice" query out/fixture-space.json
+echo "== a path for the fastener's pin, from outside (pin horizontal) into the cavity, through the slot"
+"$cslice" path out/fastener-space.json --from 0,6,0 --to 0,-3,0 -o out/fastener-path.txt
+echo "   $(wc -l < out/fastener-path.txt) configurations, each step certified free: out/fastener-path.txt"
 echo "== run-time table (the paper's Figure 8, measured here)"
 "$cslice" stats examples/knee.json examples/cam.json examples/fixture.json examples/fastener.json \
   | tee out/stats.md
