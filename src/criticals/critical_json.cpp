@@ -58,9 +58,13 @@ std::string critical_set_to_json(const Pair& pair, const CriticalSet& set) {
   counts["criticalities"] = set.stats.criticalities;
   counts["orientations"] = set.orientations.size();
   const CriticalStats& s = set.stats;
-  json stats = {{"families", s.families}, {"equations", s.equations},
-                {"roots", s.roots},       {"off_segment", s.off_segment},
-                {"blocked", s.blocked},   {"criticalities", s.criticalities}};
+  json stats = {{"families", s.families},
+                {"equations", s.equations},
+                {"roots", s.roots},
+                {"culled", s.culled},
+                {"off_segment", s.off_segment},
+                {"blocked", s.blocked},
+                {"criticalities", s.criticalities}};
   json out = {{"format", "cslice-critical"}, {"version", 1},     {"pair", pair.name},
               {"critical", critical},        {"counts", counts}, {"stats", stats}};
   return out.dump(1) + "\n";
