@@ -272,6 +272,40 @@ TEST(SliceOracle, NearlyTangentArcsCrossingTwiceStayConsistent) {
   EXPECT_FALSE(s.free_components[0].bounded);
 }
 
+// Random curved pairs at exact critical orientations, where the slices just either side have
+// one unbounded free component and the critical slice used to have none:
+// - a contact arc of a large radius (a nearly straight arc, or a concave and a convex arc of
+//   nearly equal radii) shrinks to a sliver of normals narrower than the angular epsilon but
+//   longer than eps; dropping it as a single touching direction opened the contact chain;
+// - two contact segments leave a vertex-vertex contact at a shallow angle and one ends
+//   within eps of the other, so snapping collapses the blocked sliver between them onto one
+//   edge blocked from both sides by its own labels, which then marked the unbounded face
+//   blocked.
+TEST(SliceOracle, CriticalOrientationsKeepTheirFreeSpace) {
+  struct Case {
+    unsigned seed;
+    int index;  // the pair drawn index-th from the seed, as below
+    double theta;
+  };
+  // The critical orientations as critical_orientations finds them.
+  for (const Case& c : {Case{1001u, 10, 2.3141730021220477}, Case{4242u, 20, 2.1720311310772127},
+                        Case{5005u, 1, -0.75512693816575016}, Case{5005u, 3, 1.6208977385923342},
+                        Case{7u, 7, -0.72959428383543568}}) {
+    std::mt19937 rng(c.seed);
+    testkit::RandomPair rp;
+    for (int i = 0; i <= c.index; ++i)
+      rp = testkit::random_pair(rng, 4 + i % 4, 5 + i % 5, i % 2 == 0);
+    const std::string what = "seed " + std::to_string(c.seed) + " pair " + std::to_string(c.index);
+    const Slice s = compute_slice(rp.pair, c.theta);
+    int unbounded = 0;
+    for (const FreeComponent& comp : s.free_components) unbounded += comp.bounded ? 0 : 1;
+    EXPECT_EQ(unbounded, 1) << what;
+    std::mt19937 points(c.seed);
+    EXPECT_GT(check_against_classify(rp.pair, c.theta, 2000, points, what), 1000) << what;
+    if (HasFailure()) return;
+  }
+}
+
 TEST(SliceInvariance, SymmetricFixturePartGivesTheSameSliceAHalfTurnLater) {
   // The fixture's part is symmetric under a half turn about its origin (paper 2.3: it also
   // engages upside down), so the slices at theta and theta + pi coincide.

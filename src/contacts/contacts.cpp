@@ -146,10 +146,20 @@ class ContactBuilder {
     const int n = intersect_intervals(f.normals, opposed(m.normals), pair_.tol.angular, parts);
     const Vec2 c = f.center - rot_.rotate(m.center);
     for (int i = 0; i < n; ++i) {
-      if (parts[i].span <= pair_.tol.angular) continue;  // a single touching direction
       if (std::fabs(rho) <= eps) {
-        emit(m, f, contact_kind(m, f), make_segment(c, c), true);  // a perfect fit
-      } else if (rho > 0.0) {
+        // A perfect fit, unless the features meet along a single touching direction only.
+        if (parts[i].span > pair_.tol.angular)
+          emit(m, f, contact_kind(m, f), make_segment(c, c), true);
+        continue;
+      }
+      // An arc no longer than the geometric epsilon is one point, which the ends of the
+      // contact segments beside it hold. Whether it is one point is a question of length,
+      // as for every vertex of the arrangement, not of angle: at a critical orientation a
+      // sliver of normals narrower than the angular epsilon still makes an arc of a large
+      // radius (a nearly straight feature, or a concave and a convex arc of nearly equal
+      // radii apart) longer than eps, and dropping it would leave a gap in contact space.
+      if (std::fabs(rho) * parts[i].span <= eps) continue;
+      if (rho > 0.0) {
         emit(m, f, contact_kind(m, f), make_arc(c, rho, parts[i].lo, parts[i].span));
       } else {
         // c + rho n = c + |rho| n(phi + pi); traverse clockwise to keep blocked on the left.

@@ -3,8 +3,9 @@
 //
 // Labelling is local wherever the geometry allows it: a face lying on the blocked side of
 // any contact segment along its boundary is blocked (the two features overlap just across
-// that segment). Only faces with every boundary segment's free side towards them, pieces
-// with blocked space on both sides of their own labels (a sliding fit), and vertices whose
+// that segment), unless the edge is blocked from both sides by its own labels. Only faces
+// with no edge blocking them from one side only, pieces with blocked space on both sides of
+// their own labels (a sliding fit, or a sliver thinner than eps), and vertices whose
 // every surrounding sector is blocked by segments through the vertex itself (a perfect fit)
 // are settled by the direct placement test, at one point each.
 #include <algorithm>
@@ -52,8 +53,7 @@ class SliceBuilder {
     for (size_t f = 0; f < arr_.faces.size(); ++f) {
       for (int c : arr_.faces[f].cycles)
         for (int h : arr_.cycles[c].half_edges)
-          for (const EdgeLabel& l : arr_.edges[h / 2].labels)
-            if (Arrangement::left_is_blocked(h, l)) blocked_[f] = true;
+          if (labels_block_left_only(h)) blocked_[f] = true;
       if (blocked_[f]) continue;
       samples_[f] = face_sample(arr_, int(f), pair_.tol);
       // Blocked space lies inside the box of all contact segments, and the unbounded face's
@@ -64,6 +64,20 @@ class SliceBuilder {
       else
         blocked_[f] = blocked_at(samples_[f]);
     }
+  }
+
+  // Whether the labels of h's edge put blocked space on h's left and not on its right. An
+  // edge blocked from both sides by its own labels says nothing about the faces beside it:
+  // it is a sliding fit (both faces blocked) or a sliver of blocked space thinner than the
+  // geometric epsilon, collapsed onto the edge when its sides were snapped together (at a
+  // critical orientation, two contact segments leaving a vertex-vertex contact at a shallow
+  // angle, one ending within eps of the other), with free space on both sides. Such faces
+  // are settled by their other edges or by the direct test.
+  bool labels_block_left_only(int h) const {
+    bool left = false, right = false;
+    for (const EdgeLabel& l : arr_.edges[h / 2].labels)
+      (Arrangement::left_is_blocked(h, l) ? left : right) = true;
+    return left && !right;
   }
 
   void find_realizable_edges() {
