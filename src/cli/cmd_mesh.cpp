@@ -59,8 +59,8 @@ void register_mesh(CLI::App& app) {
   sub->add_option("space", cmd->space_path, "Space file (from cslice compute)")->required();
   sub->add_option("-o,--output", cmd->out_path, "Mesh file: .obj, .ply or .stl")->required();
   sub->add_option("--theta", cmd->theta_range,
-                  "Only the orientations A,B (radians; A > B wraps through pi)");
-  sub->add_option("--box", cmd->box, "Only the configurations with (x, y) in X0,Y0,X1,Y1");
+                  "Clip the surface to theta in A,B (radians; A > B wraps through pi)");
+  sub->add_option("--box", cmd->box, "Clip the surface to (x, y) in the box X0,Y0,X1,Y1");
   sub->add_option("--threads", cmd->threads, "Slices recomputed at once (default: every core)");
   sub->callback([cmd] { run(*cmd); });
 }
