@@ -17,16 +17,12 @@
 #include "support/examples.hpp"
 #include "support/free_poses.hpp"
 #include "support/random_parts.hpp"
+#include "support/spaces.hpp"
 
 using namespace cslice;
+using testkit::space_of;
 
 namespace {
-
-SlicedSpace space_of(const Pair& pair) {
-  SpaceOptions o;
-  o.threads = 2;
-  return compute_space(pair, o);
-}
 
 // Interpolation as the path's reader does it: x and y linearly, theta the short way round.
 Pose between(const Pose& a, const Pose& b, double t) {

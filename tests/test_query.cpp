@@ -15,16 +15,12 @@
 #include "support/cli_run.hpp"
 #include "support/examples.hpp"
 #include "support/random_parts.hpp"
+#include "support/spaces.hpp"
 
 using namespace cslice;
+using testkit::space_of;
 
 namespace {
-
-SlicedSpace space_of(const Pair& pair) {
-  SpaceOptions o;
-  o.threads = 2;
-  return compute_space(pair, o);
-}
 
 // Where configurations are drawn: every contact curve of the stored slices, with a margin.
 Box query_box(const SlicedSpace& space) {

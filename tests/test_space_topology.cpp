@@ -14,16 +14,12 @@
 #include "support/cli_run.hpp"
 #include "support/examples.hpp"
 #include "support/random_parts.hpp"
+#include "support/spaces.hpp"
 
 using namespace cslice;
+using testkit::space_of;
 
 namespace {
-
-SlicedSpace space_of(const Pair& pair, int threads = 2) {
-  SpaceOptions o;
-  o.threads = threads;
-  return compute_space(pair, o);
-}
 
 void expect_clean_checks(const SpaceTopology& t, const std::string& name) {
   EXPECT_EQ(t.checks.interval_match_failures, 0) << name;

@@ -105,8 +105,7 @@ std::string report(const SpaceAnalysis& a, const SlicedSpace& space) {
 
 void run(const AnalyzeCommand& cmd) {
   if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
-  LoadSpaceResult loaded = load_space(cmd.space_path, cmd.threads);
-  if (!loaded.ok()) throw ExitError(kExitBadInput, loaded.error->message());
+  const LoadSpaceResult loaded = load_space_or_exit(cmd.space_path, cmd.threads);
   const SpaceAnalysis analysis = analyze_space(*loaded.pair, *loaded.space);
   deliver_outputs(
       {{kStdout, cmd.json ? analysis_to_json(analysis) : report(analysis, *loaded.space)}});

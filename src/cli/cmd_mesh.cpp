@@ -42,8 +42,7 @@ void run(const MeshCommand& cmd) {
   if (!writer && !stl)
     throw ExitError(kExitBadInput, "-o: the output must end in .obj, .ply or .stl");
   const MeshOptions options = mesh_options(cmd);
-  LoadSpaceResult loaded = load_space(cmd.space_path, cmd.threads);
-  if (!loaded.ok()) throw ExitError(kExitBadInput, loaded.error->message());
+  const LoadSpaceResult loaded = load_space_or_exit(cmd.space_path, cmd.threads);
   const ContactMesh mesh = contact_mesh(*loaded.pair, *loaded.space, options);
   deliver_outputs({{cmd.out_path, stl ? mesh_to_stl(mesh, loaded.pair->name) : writer(mesh)}});
 }

@@ -112,8 +112,7 @@ void run(const PathCommand& cmd) {
   if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
   const Pose from = parse_pose_or_exit(cmd.from, "--from");
   const Pose to = parse_pose_or_exit(cmd.to, "--to");
-  LoadSpaceResult loaded = load_space(cmd.space_path, cmd.threads);
-  if (!loaded.ok()) throw ExitError(kExitBadInput, loaded.error->message());
+  const LoadSpaceResult loaded = load_space_or_exit(cmd.space_path, cmd.threads);
   const PathResult r = find_path(*loaded.pair, *loaded.space, from, to);
   const std::string message =
       r.status == PathStatus::found ? "" : no_path_message(cmd, r, from, to);

@@ -20,8 +20,7 @@ struct QueryCommand {
 
 void run(const QueryCommand& cmd) {
   if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
-  LoadSpaceResult loaded = load_space(cmd.space_path, cmd.threads);
-  if (!loaded.ok()) throw ExitError(kExitBadInput, loaded.error->message());
+  const LoadSpaceResult loaded = load_space_or_exit(cmd.space_path, cmd.threads);
   const std::vector<Pose> poses = read_poses_or_exit(std::cin);
   SpaceQuery query(*loaded.pair, *loaded.space);
   std::string out;

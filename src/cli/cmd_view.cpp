@@ -430,8 +430,7 @@ MeshOptions display_mesh_options(const Pair& pair) {
 
 void run(const ViewCommand& cmd) {
   if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
-  LoadSpaceResult loaded = load_space(cmd.space_path, cmd.threads);
-  if (!loaded.ok()) throw ExitError(kExitBadInput, loaded.error->message());
+  const LoadSpaceResult loaded = load_space_or_exit(cmd.space_path, cmd.threads);
   const Pair& pair = *loaded.pair;
   const ContactMesh mesh = contact_mesh(*loaded.space, display_mesh_options(pair));
   const std::string title = pair.name.empty() ? cmd.space_path : pair.name;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cslice/pair.hpp"
+#include "cslice/space.hpp"
 
 namespace cslice::cli {
 
@@ -33,6 +34,9 @@ void deliver_outputs(std::vector<std::pair<std::string, std::string>> outputs);
 
 // Loads a pair file or throws ExitError(2) with the reader's message.
 Pair load_pair_or_exit(const std::string& path);
+// Loads a space file (recomputing its slices on `threads`, 0 for every core) or throws
+// ExitError(2) with the reader's message. The result's pair and space are both set.
+LoadSpaceResult load_space_or_exit(const std::string& path, int threads);
 // Parses "x,y,theta" (theta in radians) or throws ExitError(2) naming `what`.
 Pose parse_pose_or_exit(const std::string& text, const std::string& what);
 // Every pose of `in`, one "x y theta" per line (blank lines and '#' comments skipped), read

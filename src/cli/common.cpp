@@ -37,6 +37,12 @@ Pair load_pair_or_exit(const std::string& path) {
   return std::move(*result.pair);
 }
 
+LoadSpaceResult load_space_or_exit(const std::string& path, int threads) {
+  LoadSpaceResult result = load_space(path, threads);
+  if (!result.ok()) throw ExitError(kExitBadInput, result.error->message());
+  return result;
+}
+
 Pose parse_pose_or_exit(const std::string& text, const std::string& what) {
   Pose p;
   if (!read_finite_numbers(text, {&p.x, &p.y, &p.theta})) {

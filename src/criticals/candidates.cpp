@@ -14,12 +14,6 @@ int Binning::bin_of(double theta) const {
   return std::clamp(b, 0, count - 1);
 }
 
-bool Binning::contains(int bin, double theta, double slack) const {
-  double d = std::fmod(theta - lower(bin), kTwoPi);
-  if (d < 0.0) d += kTwoPi;
-  return d <= width + slack || d >= kTwoPi - slack;
-}
-
 std::vector<std::vector<int>> alive_families_by_bin(const std::vector<ContactFamily>& families,
                                                     const Binning& binning) {
   std::vector<std::vector<int>> alive(binning.count);

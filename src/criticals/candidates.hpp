@@ -21,8 +21,6 @@ struct Binning {
   explicit Binning(int bins);
   int bin_of(double theta) const;
   double lower(int bin) const { return -kPi + bin * width; }
-  // Whether theta lies in the closed bin, widened by `slack` radians (cyclically).
-  bool contains(int bin, double theta, double slack) const;
 };
 
 // A family alive in a bin: its cover at the bin's middle orientation, how far its contact
