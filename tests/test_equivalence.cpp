@@ -71,6 +71,27 @@ TEST(Equivalence, SixCycleIsNotTwoTriangles) {
   EXPECT_TRUE(slices_equivalent(hexagon, shuffled).equivalent);
 }
 
+// Distinct labels force the only possible map; same label multiset, same number of meetings.
+TEST(Equivalence, DistinctLabelsDecideByTheirMeetings) {
+  const auto labelled = [](Slice s) {
+    for (ContactSegment& c : s.contact_segments) c.fixed_feature = c.id;
+    return s;
+  };
+  const Slice path = labelled(graph_only(4, {{0, 1}, {1, 2}, {2, 3}}));
+  const Slice star = labelled(graph_only(4, {{0, 1}, {0, 2}, {0, 3}}));
+  const Slice reversed = labelled(graph_only(4, {{3, 2}, {2, 1}, {1, 0}}));
+  EXPECT_TRUE(slices_equivalent(path, reversed).equivalent);
+  const EquivalenceResult r = slices_equivalent(path, star);
+  EXPECT_FALSE(r.equivalent);
+  EXPECT_NE(r.difference.find("meets different contact segments"), std::string::npos);
+  // Isomorphic as unlabelled graphs, but not by the labels: 0-1-2-3 against 1-0-2-3.
+  EXPECT_FALSE(
+      slices_equivalent(path, labelled(graph_only(4, {{1, 0}, {0, 2}, {2, 3}}))).equivalent);
+  const Slice doubled = labelled(graph_only(4, {{0, 1}, {1, 2}, {2, 3}, {0, 1}}));
+  const Slice doubled_elsewhere = labelled(graph_only(4, {{0, 1}, {1, 2}, {2, 3}, {2, 3}}));
+  EXPECT_FALSE(slices_equivalent(doubled, doubled_elsewhere).equivalent);
+}
+
 TEST(Equivalence, MultiplicityOfMeetingPointsCounts) {
   const Slice once = graph_only(3, {{0, 1}, {1, 2}, {0, 2}, {0, 1}});
   const Slice twice = graph_only(3, {{0, 1}, {1, 2}, {0, 2}, {1, 2}});

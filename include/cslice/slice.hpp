@@ -3,6 +3,7 @@
 // blocked regions (paper sections 4, 6.1, 6.2, 6.5 and 7).
 #pragma once
 
+#include <memory>
 #include <string_view>
 #include <vector>
 
@@ -97,5 +98,21 @@ std::vector<ContactSegment> contact_segments(const Pair& pair, double theta);
 
 // The whole slice at theta.
 Slice compute_slice(const Pair& pair, double theta);
+
+// Many slices of one pair (the engine behind compute_slice): the features' contact data and
+// the placement tester's indexes are built once instead of per slice. Not thread-safe, as
+// it keeps scratch state: one per thread. The pair must outlive it.
+class Slicer {
+ public:
+  explicit Slicer(const Pair& pair);
+  ~Slicer();
+  Slicer(Slicer&&) noexcept;
+  Slicer& operator=(Slicer&&) noexcept;
+  Slice slice(double theta);
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 }  // namespace cslice

@@ -3,6 +3,7 @@
 // which it can touch another part.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "cslice/slice.hpp"
@@ -33,6 +34,27 @@ std::vector<ContactFeature> contact_features(const Part& part);
 // concave pairs, vertex pairs and convex features too big for a concave one never touch.
 bool pair_can_touch(const ContactFeature& m, const ContactFeature& f, double eps);
 ContactKind contact_kind(const ContactFeature& m, const ContactFeature& f);
+
+class NormalIndex;  // contacts.cpp
+
+// The contact segments of one pair at many orientations: the features as contact makers
+// and the index of fixed normals are built once. Not thread-safe (it keeps scratch state):
+// one per thread.
+class ContactMaker {
+ public:
+  explicit ContactMaker(const Pair& pair);
+  ~ContactMaker();
+  ContactMaker(const ContactMaker&) = delete;
+  ContactMaker& operator=(const ContactMaker&) = delete;
+  // Replaces out with the contact segments at theta, as contact_segments(pair, theta).
+  void segments(double theta, std::vector<ContactSegment>& out);
+
+ private:
+  const Pair& pair_;
+  std::vector<ContactFeature> moving_, fixed_;
+  std::unique_ptr<NormalIndex> index_;
+  std::vector<int> candidates_;  // reused scratch
+};
 
 // Appends the contact segments of one feature pair at theta (none when the pair cannot
 // touch there), by the rules contact_segments applies to every pair; ids continue from

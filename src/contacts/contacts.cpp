@@ -175,6 +175,8 @@ class ContactBuilder {
   std::vector<ContactSegment>& out_;
 };
 
+}  // namespace
+
 // Fixed features bucketed by the directions of their outward normals, so that each moving
 // feature meets only the fixed ones whose normals can oppose its own: the pairs that can
 // touch at all. Buckets split the circle evenly; an interval goes into every bucket it
@@ -187,19 +189,16 @@ class NormalIndex {
     for (size_t i = 0; i < fixed.size(); ++i)
       if (fixed[i].can_touch)
         for_each_bucket(fixed[i].normals, [&](size_t b) { buckets_[b].push_back(int(i)); });
-    seen_.assign(fixed.size(), -1);
   }
 
-  // Calls visit(i) once for every fixed feature i whose bucket range meets the interval.
-  template <class Visit>
-  void for_each_candidate(const AngleInterval& normals, int query, Visit visit) {
-    for_each_bucket(normals, [&](size_t b) {
-      for (int i : buckets_[b]) {
-        if (seen_[i] == query) continue;
-        seen_[i] = query;
-        visit(i);
-      }
-    });
+  // Every fixed feature whose bucket range meets the interval, once each, in feature order:
+  // the output (segment ids) then follows the features' order, whatever the bucketing.
+  void candidates(const AngleInterval& normals, std::vector<int>& out) const {
+    out.clear();
+    for_each_bucket(
+        normals, [&](size_t b) { out.insert(out.end(), buckets_[b].begin(), buckets_[b].end()); });
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
   }
 
  private:
@@ -218,31 +217,31 @@ class NormalIndex {
   }
 
   std::vector<std::vector<int>> buckets_;
-  std::vector<int> seen_;
   double width_ = 1.0;
   double eps_;
 };
 
-}  // namespace
+ContactMaker::ContactMaker(const Pair& pair)
+    : pair_(pair),
+      moving_(contact_features(pair.moving)),
+      fixed_(contact_features(pair.fixed)),
+      index_(std::make_unique<NormalIndex>(fixed_, pair.tol.angular)) {}
+
+ContactMaker::~ContactMaker() = default;
+
+void ContactMaker::segments(double theta, std::vector<ContactSegment>& out) {
+  out.clear();
+  ContactBuilder builder(pair_, theta, out);
+  for (const ContactFeature& m : moving_) {
+    if (!m.can_touch) continue;
+    index_->candidates({m.normals.lo + theta + kPi, m.normals.span}, candidates_);
+    for (int i : candidates_) builder.add_pair(m, fixed_[i]);
+  }
+}
 
 std::vector<ContactSegment> contact_segments(const Pair& pair, double theta) {
-  const std::vector<ContactFeature> moving = contact_features(pair.moving);
-  const std::vector<ContactFeature> fixed = contact_features(pair.fixed);
   std::vector<ContactSegment> out;
-  ContactBuilder builder(pair, theta, out);
-  NormalIndex index(fixed, pair.tol.angular);
-  // Candidates arrive in bucket order; sorting each moving feature's list keeps the output
-  // (segment ids) in the fixed order of the features, whatever the bucketing.
-  std::vector<int> candidates;
-  for (size_t k = 0; k < moving.size(); ++k) {
-    const ContactFeature& m = moving[k];
-    if (!m.can_touch) continue;
-    candidates.clear();
-    const AngleInterval opposed{m.normals.lo + theta + kPi, m.normals.span};
-    index.for_each_candidate(opposed, int(k), [&](int i) { candidates.push_back(i); });
-    std::sort(candidates.begin(), candidates.end());
-    for (int i : candidates) builder.add_pair(m, fixed[i]);
-  }
+  ContactMaker(pair).segments(theta, out);
   return out;
 }
 

@@ -1,6 +1,7 @@
 // Label-preserving isomorphism of contact graphs.
 //
-// Contact graphs are small and their labels (feature pairs) nearly unique, so colour
+// Contact graphs are small and their labels (feature pairs) nearly unique. When every label
+// is used once the map is forced and one sorted comparison decides. Otherwise colour
 // refinement usually leaves classes of one node and the search below is linear; classes
 // of several nodes (a feature pair with two contact segments, symmetric parts) are
 // resolved by backtracking, which keeps the answer exact.
@@ -9,42 +10,72 @@
 #include <algorithm>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 namespace cslice {
 namespace {
 
 using Label = std::pair<int, int>;  // (moving feature, fixed feature)
 
-struct LabelledGraph {
-  std::vector<Label> labels;                // per node
-  std::map<std::pair<int, int>, int> mult;  // (u, v) with u < v -> number of meeting points
-  std::vector<std::vector<int>> neighbours;
-  int edges = 0;
+struct Neighbour {
+  int node = 0;
+  int meetings = 0;  // meeting points of the two contact segments
 };
+
+struct Meeting {
+  int u = 0, v = 0;  // u < v
+  int count = 0;
+  auto operator<=>(const Meeting&) const = default;
+};
+
+struct LabelledGraph {
+  std::vector<Label> labels;      // per node
+  std::vector<Meeting> meetings;  // sorted, one per pair of nodes that meet
+  std::vector<std::vector<Neighbour>> neighbours;
+  int edges = 0;  // meeting points in all
+};
+
+// Meetings listed once per meeting point, pairs ordered, made distinct with their counts.
+std::vector<Meeting> count_meetings(std::vector<Meeting> raw) {
+  std::sort(raw.begin(), raw.end());
+  std::vector<Meeting> out;
+  for (const Meeting& m : raw) {
+    if (!out.empty() && out.back().u == m.u && out.back().v == m.v)
+      out.back().count += m.count;
+    else
+      out.push_back(m);
+  }
+  return out;
+}
 
 LabelledGraph graph_of(const Slice& s) {
   LabelledGraph g;
-  std::map<int, int> index;  // segment id -> node
+  std::vector<int> index(s.contact_segments.size(), -1);  // segment id -> node
   for (int id : s.contact_graph.nodes) {
-    index[id] = int(g.labels.size());
+    index.at(id) = int(g.labels.size());
     const ContactSegment& c = s.contact_segments[id];
     g.labels.push_back({c.moving_feature, c.fixed_feature});
   }
-  g.neighbours.resize(g.labels.size());
+  std::vector<Meeting> raw;
   for (const ContactGraphEdge& e : s.contact_graph.edges) {
     const int u = index.at(e.a), v = index.at(e.b);
-    if (g.mult[{std::min(u, v), std::max(u, v)}]++ == 0) {
-      g.neighbours[u].push_back(v);
-      g.neighbours[v].push_back(u);
-    }
-    ++g.edges;
+    if (u < 0 || v < 0) throw std::out_of_range("contact graph edge between non-nodes");
+    raw.push_back({std::min(u, v), std::max(u, v), 1});
+  }
+  g.edges = int(raw.size());
+  g.meetings = count_meetings(std::move(raw));
+  g.neighbours.resize(g.labels.size());
+  for (const Meeting& m : g.meetings) {
+    g.neighbours[m.u].push_back({m.v, m.count});
+    g.neighbours[m.v].push_back({m.u, m.count});
   }
   return g;
 }
 
 int multiplicity(const LabelledGraph& g, int u, int v) {
-  auto it = g.mult.find({std::min(u, v), std::max(u, v)});
-  return it == g.mult.end() ? 0 : it->second;
+  for (const Neighbour& n : g.neighbours[u])
+    if (n.node == v) return n.meetings;
+  return 0;
 }
 
 std::string label_text(Label l) {
@@ -53,24 +84,39 @@ std::string label_text(Label l) {
   return out.str();
 }
 
-// One round of refinement on both graphs with a shared dictionary, so colours compare.
+// One round of refinement on both graphs at once: each node's new colour numbers its
+// signature (its colour, then its neighbours' colours and meeting counts, sorted) in the
+// sorted order of all signatures of both graphs, so colours compare across the graphs.
 std::vector<std::vector<int>> refine(const std::vector<const LabelledGraph*>& graphs,
                                      const std::vector<std::vector<int>>& colours) {
-  std::map<std::vector<int>, int> dictionary;
-  std::vector<std::vector<int>> next(graphs.size());
+  std::vector<std::vector<int>> signatures;
+  std::vector<std::pair<int, int>> around;
   for (size_t k = 0; k < graphs.size(); ++k) {
     const LabelledGraph& g = *graphs[k];
-    next[k].resize(g.labels.size());
     for (size_t u = 0; u < g.labels.size(); ++u) {
-      std::vector<int> signature{colours[k][u]};
-      std::vector<std::pair<int, int>> around;
-      for (int v : g.neighbours[u]) around.push_back({colours[k][v], multiplicity(g, int(u), v)});
+      around.clear();
+      for (const Neighbour& n : g.neighbours[u]) around.push_back({colours[k][n.node], n.meetings});
       std::sort(around.begin(), around.end());
+      std::vector<int> signature{colours[k][u]};
       for (auto [c, m] : around) signature.insert(signature.end(), {c, m});
-      next[k][u] = dictionary.emplace(signature, int(dictionary.size())).first->second;
+      signatures.push_back(std::move(signature));
     }
   }
-  return next;
+  std::vector<int> order(signatures.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+  std::sort(order.begin(), order.end(),
+            [&](int x, int y) { return signatures[x] < signatures[y]; });
+  std::vector<int> colour(signatures.size());
+  int next = -1;
+  for (size_t i = 0; i < order.size(); ++i) {
+    if (i == 0 || signatures[order[i]] != signatures[order[i - 1]]) ++next;
+    colour[order[i]] = next;
+  }
+  std::vector<std::vector<int>> out(graphs.size());
+  size_t at = 0;
+  for (size_t k = 0; k < graphs.size(); ++k)
+    for (size_t u = 0; u < graphs[k]->labels.size(); ++u) out[k].push_back(colour[at++]);
+  return out;
 }
 
 std::map<int, int> histogram(const std::vector<int>& colours) {
@@ -97,11 +143,11 @@ class Matcher {
 
  private:
   bool consistent(int u, int w) const {
-    for (int v : a_.neighbours[u])
-      if (map_[v] >= 0 && multiplicity(a_, u, v) != multiplicity(b_, w, map_[v])) return false;
+    for (const Neighbour& n : a_.neighbours[u])
+      if (map_[n.node] >= 0 && n.meetings != multiplicity(b_, w, map_[n.node])) return false;
     // A neighbour of w already used as an image must be the image of a neighbour of u.
-    for (int x : b_.neighbours[w])
-      if (preimage_[x] >= 0 && multiplicity(a_, u, preimage_[x]) == 0) return false;
+    for (const Neighbour& x : b_.neighbours[w])
+      if (preimage_[x.node] >= 0 && multiplicity(a_, u, preimage_[x.node]) == 0) return false;
     return true;
   }
   bool extend(size_t k) {
@@ -131,17 +177,47 @@ EquivalenceResult differ(const std::string& why) {
 
 // Compares the label multisets; empty when they agree.
 std::string label_difference(const LabelledGraph& a, const LabelledGraph& b) {
-  std::map<Label, std::pair<int, int>> counts;
-  for (Label l : a.labels) ++counts[l].first;
-  for (Label l : b.labels) ++counts[l].second;
-  for (const auto& [label, n] : counts) {
-    if (n.first == n.second) continue;
-    std::ostringstream out;
-    out << "contact segments of " << label_text(label) << ": " << n.first << " in the first slice, "
-        << n.second << " in the second";
-    return out.str();
+  std::vector<Label> la = a.labels, lb = b.labels;
+  std::sort(la.begin(), la.end());
+  std::sort(lb.begin(), lb.end());
+  if (la == lb) return {};
+  const auto [ia, ib] = std::mismatch(la.begin(), la.end(), lb.begin(), lb.end());
+  const Label label = ib == lb.end() || (ia != la.end() && *ia < *ib) ? *ia : *ib;
+  std::ostringstream out;
+  out << "contact segments of " << label_text(label) << ": "
+      << std::count(la.begin(), la.end(), label) << " in the first slice, "
+      << std::count(lb.begin(), lb.end(), label) << " in the second";
+  return out.str();
+}
+
+bool labels_distinct(const LabelledGraph& g) {
+  std::vector<Label> sorted = g.labels;
+  std::sort(sorted.begin(), sorted.end());
+  return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+}
+
+// With every label used once (the common case: a feature pair rarely makes two contact
+// segments), the only label-preserving map is by label, so the graphs are isomorphic
+// exactly when b's meetings, renamed by it, are a's.
+EquivalenceResult compare_by_labels(const LabelledGraph& a, const LabelledGraph& b) {
+  std::vector<std::pair<Label, int>> by_label;
+  for (size_t u = 0; u < a.labels.size(); ++u) by_label.push_back({a.labels[u], int(u)});
+  std::sort(by_label.begin(), by_label.end());
+  const auto node_in_a = [&](Label l) {
+    return std::lower_bound(by_label.begin(), by_label.end(), std::pair{l, -1})->second;
+  };
+  std::vector<Meeting> renamed;
+  for (const Meeting& m : b.meetings) {
+    const int u = node_in_a(b.labels[m.u]), v = node_in_a(b.labels[m.v]);
+    renamed.push_back({std::min(u, v), std::max(u, v), m.count});
   }
-  return {};
+  std::sort(renamed.begin(), renamed.end());
+  if (renamed == a.meetings) return {true, {}};
+  const auto [ma, mb] =
+      std::mismatch(a.meetings.begin(), a.meetings.end(), renamed.begin(), renamed.end());
+  const int u = ma != a.meetings.end() ? ma->u : mb->u;
+  return differ("the contact segment of " + label_text(a.labels[u]) +
+                " meets different contact segments in the two slices");
 }
 
 }  // namespace
@@ -155,6 +231,7 @@ EquivalenceResult slices_equivalent(const Slice& sa, const Slice& sb) {
         << b.edges << " in the second";
     return differ(out.str());
   }
+  if (labels_distinct(a)) return compare_by_labels(a, b);
   // Initial colours: the labels, numbered in one shared order.
   std::map<Label, int> label_colour;
   for (Label l : a.labels) label_colour.emplace(l, int(label_colour.size()));

@@ -10,6 +10,7 @@
 // are settled by the direct placement test, at one point each.
 #include <algorithm>
 
+#include "contacts/contact_features.hpp"
 #include "cslice/classify.hpp"
 #include "cslice/slice.hpp"
 #include "parts/loop_queries.hpp"
@@ -21,12 +22,13 @@ namespace {
 
 class SliceBuilder {
  public:
-  SliceBuilder(const Pair& pair, double theta) : pair_(pair), tester_(pair), theta_(theta) {}
+  SliceBuilder(const Pair& pair, ContactMaker& contacts, PlacementTester& tester, double theta)
+      : pair_(pair), contacts_(contacts), tester_(tester), theta_(theta) {}
 
   Slice build() {
     slice_.theta = theta_;
     slice_.epsilon = pair_.tol.geometric;
-    slice_.contact_segments = contact_segments(pair_, theta_);
+    contacts_.segments(theta_, slice_.contact_segments);
     std::vector<Curve> curves;
     std::vector<int> ids;
     for (const ContactSegment& s : slice_.contact_segments) {
@@ -254,7 +256,8 @@ class SliceBuilder {
   }
 
   const Pair& pair_;
-  PlacementTester tester_;
+  ContactMaker& contacts_;
+  PlacementTester& tester_;
   double theta_;
   Slice slice_;
   Arrangement arr_;
@@ -282,8 +285,24 @@ int Slice::locate(Vec2 p) const {
   return -1;
 }
 
+struct Slicer::State {
+  explicit State(const Pair& p) : pair(p), contacts(p), tester(p) {}
+  const Pair& pair;
+  ContactMaker contacts;
+  PlacementTester tester;
+};
+
+Slicer::Slicer(const Pair& pair) : state_(std::make_unique<State>(pair)) {}
+Slicer::~Slicer() = default;
+Slicer::Slicer(Slicer&&) noexcept = default;
+Slicer& Slicer::operator=(Slicer&&) noexcept = default;
+
+Slice Slicer::slice(double theta) {
+  return SliceBuilder(state_->pair, state_->contacts, state_->tester, theta).build();
+}
+
 Slice compute_slice(const Pair& pair, double theta) {
-  return SliceBuilder(pair, theta).build();
+  return Slicer(pair).slice(theta);
 }
 
 }  // namespace cslice

@@ -3,6 +3,7 @@
 #include "cslice/space.hpp"
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #include <atomic>
@@ -75,19 +76,27 @@ std::vector<Planned> plan_slices(const CriticalSet& criticals, double step) {
 
 // Each slice depends only on the pair and its theta and is stored at its own index, so the
 // result is the same whatever the number of threads or the order they run in.
+void for_each_index_parallel(const Pair& pair, size_t count, int threads,
+                             const std::function<void(size_t, Slicer&)>& slice_at) {
+  tbb::enumerable_thread_specific<Slicer> slicers([&] { return Slicer(pair); });
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  // Grain 1: slices differ widely in cost, so let the scheduler balance single slices.
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 1), [&](const auto& range) {
+      Slicer& slicer = slicers.local();
+      for (size_t i = range.begin(); i != range.end(); ++i) slice_at(i, slicer);
+    });
+  });
+}
+
 std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Planned>& plan,
                                        int threads, const ProgressReport& progress) {
   std::vector<SpaceSlice> out(plan.size());
   std::atomic<size_t> done = 0;
-  const auto body = [&](const tbb::blocked_range<size_t>& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i) {
-      out[i] = {plan[i].theta, plan[i].kind, plan[i].interval, compute_slice(pair, plan[i].theta)};
-      if (progress) progress("slices", ++done, plan.size());
-    }
-  };
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  // Grain 1: slices differ widely in cost, so let the scheduler balance single slices.
-  arena.execute([&] { tbb::parallel_for(tbb::blocked_range<size_t>(0, plan.size(), 1), body); });
+  for_each_index_parallel(pair, plan.size(), threads, [&](size_t i, Slicer& slicer) {
+    out[i] = {plan[i].theta, plan[i].kind, plan[i].interval, slicer.slice(plan[i].theta)};
+    if (progress) progress("slices", ++done, plan.size());
+  });
   return out;
 }
 

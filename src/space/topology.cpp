@@ -8,10 +8,6 @@
 // failure is reported in TopologyChecks, never papered over. Across a critical orientation
 // theta_k the cells are joined through two side slices at theta_k -+ delta and the critical
 // slice itself (join rules in `transition` below).
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -20,6 +16,7 @@
 
 #include "cslice/equivalence.hpp"
 #include "cslice/space.hpp"
+#include "space/space_build.hpp"
 
 namespace cslice {
 
@@ -138,12 +135,8 @@ class TopologyBuilder {
       thetas[2 * k + 1] = wrap_angle(criticals_[k] + delta);
     }
     sides_.resize(thetas.size());
-    tbb::task_arena arena(threads_ > 0 ? threads_ : tbb::task_arena::automatic);
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<size_t>(0, thetas.size(), 1), [&](const auto& r) {
-        for (size_t i = r.begin(); i != r.end(); ++i)
-          if (has_side_[i]) sides_[i] = compute_slice(pair_, thetas[i]);
-      });
+    detail::for_each_index_parallel(pair_, thetas.size(), threads_, [&](size_t i, Slicer& s) {
+      if (has_side_[i]) sides_[i] = s.slice(thetas[i]);
     });
   }
 
