@@ -298,3 +298,19 @@ TEST(Containment, FullCircleInsideALongerCycleCountsItsDisc) {
   EXPECT_TRUE(loop_encloses(walk, {4.5, 0.2}));   // the disc only
   EXPECT_TRUE(loop_encloses(walk, {2, 2}));       // the square only
 }
+
+TEST(Containment, ATinyArcWithSnappedEndsTogglesOnlyNearItself) {
+  // A 1.4e-8 piece of an arc of radius 17 (sweep 8e-10) whose ends an arrangement snapped to
+  // vertices about 1e-8 away: its chord now points nearly along the radius, and
+  // the chord's half-plane alone cut the disc in two (seed 4242 pair 9 of the slice tests).
+  const Curve arc = make_arc({0, 0}, 17.0, 0.0, 8e-10);
+  Curve snapped = arc;
+  snapped.from = arc.from + Vec2{-1e-8, 5e-9};
+  snapped.to = arc.to + Vec2{1e-8, -5e-9};
+  for (const Vec2 p : {Vec2{16.0, 0.5}, Vec2{16.0, -0.5}, Vec2{5.0, 3.0}, Vec2{-3.0, 1.0}})
+    EXPECT_FALSE(toggles_parity(snapped, p)) << p.x << ", " << p.y;
+  // Exact ends: the segment is the same whatever the sector test adds.
+  const Curve half = make_arc({0, 0}, 1.0, 0.0, kPi / 2);
+  EXPECT_TRUE(toggles_parity(half, {0.65, 0.65}));  // between the chord and the arc
+  EXPECT_FALSE(toggles_parity(half, {0.8, 0.8}));   // beyond the arc
+}

@@ -1,5 +1,6 @@
 // Point queries on loops and parts, and placing a part at a pose.
 #include <algorithm>
+#include <cmath>
 
 #include "cslice/part.hpp"
 #include "parts/loop_queries.hpp"
@@ -34,10 +35,21 @@ bool ray_crosses_chord(Vec2 a, Vec2 b, Vec2 p, int side) {
 }
 
 // The region between an arc and its chord: the arc's disc cut by the chord's line, on the
-// side where the arc runs (right of the chord for counterclockwise arcs).
+// side where the arc runs (right of the chord for counterclockwise arcs). A minor arc's
+// segment also lies within the arc's sector, which is checked too: an arrangement snaps a
+// piece's ends to vertices up to eps away, so the chord of a piece not much longer than eps
+// can point anywhere, and its half-plane would then cut the disc far from the arc (a 1e-8
+// piece of a contact arc of radius 17 toggled points 0.8 away). The sector, bounded by the
+// rays through the ends, stays a sliver along such an arc. For an arc whose ends lie on its
+// circle the segment is inside the sector, so the test changes nothing there.
 bool in_circular_segment(const Curve& arc, Vec2 p, int side) {
-  if (length_squared(p - arc.center) >= arc.radius * arc.radius) return false;
-  return arc.sweep > 0.0 ? side < 0 : side > 0;
+  const Vec2 q = p - arc.center;
+  if (length_squared(q) >= arc.radius * arc.radius) return false;
+  if (!(arc.sweep > 0.0 ? side < 0 : side > 0)) return false;
+  if (std::fabs(arc.sweep) > kPi) return true;
+  const Vec2 a = arc.from - arc.center, b = arc.to - arc.center;
+  return arc.sweep > 0.0 ? cross(a, q) >= 0.0 && cross(q, b) >= 0.0
+                         : cross(a, q) <= 0.0 && cross(q, b) <= 0.0;
 }
 
 }  // namespace
