@@ -9,6 +9,7 @@
 // every surrounding sector is blocked by segments through the vertex itself (a perfect fit)
 // are settled by the direct placement test, at one point each.
 #include <algorithm>
+#include <optional>
 
 #include "contacts/contact_features.hpp"
 #include "cslice/classify.hpp"
@@ -22,7 +23,8 @@ namespace {
 
 class SliceBuilder {
  public:
-  SliceBuilder(const Pair& pair, ContactMaker& contacts, PlacementTester& tester, double theta)
+  SliceBuilder(const Pair& pair, ContactMaker& contacts, std::optional<PlacementTester>& tester,
+               double theta)
       : pair_(pair), contacts_(contacts), tester_(tester), theta_(theta) {}
 
   Slice build() {
@@ -47,7 +49,11 @@ class SliceBuilder {
   }
 
  private:
-  bool blocked_at(Vec2 p) { return tester_.blocked({p.x, p.y, theta_}); }
+  // The tester is built on first use: many slices settle every face by its labels.
+  bool blocked_at(Vec2 p) {
+    if (!tester_) tester_.emplace(pair_);
+    return tester_->blocked({p.x, p.y, theta_});
+  }
 
   void label_faces() {
     blocked_.assign(arr_.faces.size(), false);
@@ -257,7 +263,7 @@ class SliceBuilder {
 
   const Pair& pair_;
   ContactMaker& contacts_;
-  PlacementTester& tester_;
+  std::optional<PlacementTester>& tester_;
   double theta_;
   Slice slice_;
   Arrangement arr_;
@@ -286,10 +292,10 @@ int Slice::locate(Vec2 p) const {
 }
 
 struct Slicer::State {
-  explicit State(const Pair& p) : pair(p), contacts(p), tester(p) {}
+  explicit State(const Pair& p) : pair(p), contacts(p) {}
   const Pair& pair;
   ContactMaker contacts;
-  PlacementTester tester;
+  std::optional<PlacementTester> tester;
 };
 
 Slicer::Slicer(const Pair& pair) : state_(std::make_unique<State>(pair)) {}
