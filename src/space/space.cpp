@@ -156,9 +156,16 @@ double interpolation_step(double reach, double tolerance) {
 
 std::vector<SegmentLabel> realizable_labels(const Slice& slice) {
   std::vector<SegmentLabel> out;
-  for (int id : realizable_segment_ids(slice))
-    for (const ContactSegment& s : slice.contact_segments)
-      if (s.id == id) out.push_back({s.moving_feature, s.fixed_feature});
+  // The segments of realizable_segment_ids, without building its set: ids number the
+  // segments, and repeats go with the labels' sort below.
+  const auto add = [&](int id) {
+    const ContactSegment& s = slice.contact_segments.at(id);
+    out.push_back({s.moving_feature, s.fixed_feature});
+  };
+  for (int id : slice.contact_graph.nodes) add(id);
+  for (const ContactPiece& p : slice.realizable) add(p.segment);
+  for (const DegenerateContact& d : slice.degenerate)
+    for (int id : d.segments) add(id);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
