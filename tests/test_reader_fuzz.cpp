@@ -3,16 +3,15 @@
 // Also the `cslice info` exit statuses on a bad and a good file.
 #include <gtest/gtest.h>
 
-#include <cctype>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "cslice/pair.hpp"
 #include "support/cli_run.hpp"
+#include "support/mutations.hpp"
 
 namespace cslice {
 namespace {
@@ -28,158 +27,6 @@ const std::vector<std::string> kSeeds = {
                   "enclosure": false}})",
 };
 
-const std::vector<std::string> kNumberReplacements = {"nan",
-                                                      "NaN",
-                                                      "1e308",
-                                                      "-1e308",
-                                                      "-0",
-                                                      "1e999",
-                                                      "-1e999",
-                                                      "1e9",
-                                                      "1.0000001e9",
-                                                      "0",
-                                                      "1e-300",
-                                                      "5e-324",
-                                                      "123456789012345678901234567890",
-                                                      "-",
-                                                      "Infinity",
-                                                      "0.5",
-                                                      "3",
-                                                      "1e-9",
-                                                      "-1",
-                                                      "2.5",
-                                                      "\"7\"",
-                                                      "true",
-                                                      "null",
-                                                      "[]",
-                                                      "{}",
-                                                      "[1,2]"};
-
-const std::string kInsertable = "[]{},:\"0123456789.-e \n\\tfnu";
-
-// Positions where a number starts (a digit or '-' not preceded by a number character).
-std::vector<size_t> number_starts(const std::string& s) {
-  std::vector<size_t> out;
-  for (size_t i = 0; i < s.size(); ++i) {
-    const bool starts = std::isdigit(static_cast<unsigned char>(s[i])) || s[i] == '-';
-    const bool after_number = i > 0 && (std::isdigit(static_cast<unsigned char>(s[i - 1])) ||
-                                        s[i - 1] == '.' || s[i - 1] == 'e' || s[i - 1] == '-');
-    if (starts && !after_number) out.push_back(i);
-  }
-  return out;
-}
-
-size_t number_end(const std::string& s, size_t i) {
-  while (i < s.size() && (std::isdigit(static_cast<unsigned char>(s[i])) || s[i] == '.' ||
-                          s[i] == 'e' || s[i] == 'E' || s[i] == '-' || s[i] == '+'))
-    ++i;
-  return i;
-}
-
-class Mutator {
- public:
-  explicit Mutator(unsigned seed) : rng_(seed) {}
-
-  std::string mutate(std::string s) {
-    const int rounds = 1 + pick(3);
-    for (int r = 0; r < rounds; ++r) s = mutate_once(std::move(s));
-    return s;
-  }
-
- private:
-  size_t pick(size_t n) {
-    return n == 0 ? 0 : std::uniform_int_distribution<size_t>(0, n - 1)(rng_);
-  }
-
-  std::string mutate_once(std::string s) {
-    if (s.empty()) return "{";
-    const size_t i = pick(s.size());
-    switch (pick(10)) {
-      case 0:
-        return s.erase(i, 1);
-      case 1:
-        return s.insert(i, 1, s[i]);
-      case 2:
-        if (i + 1 < s.size()) std::swap(s[i], s[i + 1]);
-        return s;
-      case 3:
-        return s.insert(i, 1, kInsertable[pick(kInsertable.size())]);
-      case 4:
-        return s.substr(0, i);
-      case 5:
-        return nest(std::move(s), i);
-      case 6:
-        return drop_key(std::move(s));
-      case 7:
-        return duplicate_bracketed(std::move(s), i);
-      default:
-        return replace_number(std::move(s));
-    }
-  }
-
-  std::string replace_number(std::string s) {
-    const std::vector<size_t> starts = number_starts(s);
-    if (starts.empty()) return s;
-    const size_t at = starts[pick(starts.size())];
-    return s.replace(at, number_end(s, at) - at,
-                     kNumberReplacements[pick(kNumberReplacements.size())]);
-  }
-
-  // Wraps from position i to the end of the next bracketed value, or many open brackets.
-  std::string nest(std::string s, size_t i) {
-    if (pick(4) == 0) return s.insert(i, std::string(1 + pick(200), '['));
-    const size_t open = s.find_first_of("[{", i);
-    if (open == std::string::npos) return s;
-    const size_t close = matching(s, open);
-    if (close == std::string::npos) return s;
-    s.insert(close + 1, "]");
-    return s.insert(open, "[");
-  }
-
-  // Removes a "key": value pair (the value up to the next comma or closing brace).
-  std::string drop_key(std::string s) {
-    std::vector<size_t> keys;
-    for (size_t p = s.find("\":"); p != std::string::npos; p = s.find("\":", p + 1))
-      keys.push_back(p);
-    if (keys.empty()) return s;
-    const size_t colon = keys[pick(keys.size())];
-    const size_t key_start = s.rfind('"', colon - 1);
-    if (key_start == std::string::npos) return s;
-    size_t end = colon + 2;
-    while (end < s.size() && s[end] == ' ') ++end;
-    if (end < s.size() && (s[end] == '[' || s[end] == '{')) {
-      const size_t close = matching(s, end);
-      end = close == std::string::npos ? s.size() : close + 1;
-    } else {
-      end = s.find_first_of(",}", end);
-      if (end == std::string::npos) end = s.size();
-    }
-    if (end < s.size() && s[end] == ',') ++end;
-    return s.erase(key_start, end - key_start);
-  }
-
-  // Copies a bracketed value (a vertex, a loop, a part) right after itself.
-  std::string duplicate_bracketed(std::string s, size_t i) {
-    const size_t open = s.find('[', i);
-    if (open == std::string::npos) return s;
-    const size_t close = matching(s, open);
-    if (close == std::string::npos) return s;
-    return s.insert(close + 1, "," + s.substr(open, close + 1 - open));
-  }
-
-  static size_t matching(const std::string& s, size_t open) {
-    int depth = 0;
-    for (size_t k = open; k < s.size(); ++k) {
-      if (s[k] == '[' || s[k] == '{') ++depth;
-      if (s[k] == ']' || s[k] == '}')
-        if (--depth == 0) return k;
-    }
-    return std::string::npos;
-  }
-
-  std::mt19937 rng_;
-};
-
 TEST(ReaderFuzz, SeedsAreValid) {
   for (const std::string& seed : kSeeds) {
     const LoadResult r = parse_pair(seed, "seed.json");
@@ -192,7 +39,7 @@ TEST(ReaderFuzz, MutationsNeverCrashOrHang) {
   const auto budget = std::chrono::seconds(2);  // per parse; a hang shows as a failure here
   int accepted = 0, rejected = 0;
   for (size_t seed_index = 0; seed_index < kSeeds.size(); ++seed_index) {
-    Mutator mutator(1234u + static_cast<unsigned>(seed_index));
+    testkit::TextMutator mutator(1234u + static_cast<unsigned>(seed_index));
     for (int it = 0; it < kIterationsPerSeed; ++it) {
       const std::string text = mutator.mutate(kSeeds[seed_index]);
       const auto start = std::chrono::steady_clock::now();

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "cslice/pair.hpp"
+#include "parts/json_text.hpp"
 #include "parts/validate.hpp"
 
 namespace cslice {
@@ -24,10 +25,6 @@ using detail::RawLoop;
 using detail::RawPart;
 using detail::RawVertex;
 using nlohmann::json;
-
-// Deepest bracket nesting accepted. A valid pair file nests five deep (top, part, loops,
-// loop, vertex); the bound keeps absurd inputs from costing memory and time in the parser.
-constexpr int kMaxNesting = 32;
 
 struct ReadFailure {
   InputError error;
@@ -49,54 +46,17 @@ struct Where {
 
 // ---- JSON text ------------------------------------------------------------------------
 
-std::string line_column_at(std::string_view text, size_t offset) {
-  size_t line = 1, column = 1;
-  for (size_t i = 0; i < offset && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
-
-// Rejects nesting deeper than kMaxNesting before the parser sees the text.
-void check_nesting(std::string_view text) {
-  int depth = 0;
-  bool in_string = false, escaped = false;
-  for (size_t i = 0; i < text.size(); ++i) {
-    const char ch = text[i];
-    if (in_string) {
-      if (escaped)
-        escaped = false;
-      else if (ch == '\\')
-        escaped = true;
-      else if (ch == '"')
-        in_string = false;
-    } else if (ch == '"') {
-      in_string = true;
-    } else if (ch == '[' || ch == '{') {
-      if (++depth > kMaxNesting)
-        fail(Where{}, "invalid JSON at " + line_column_at(text, i) + ": nested deeper than " +
-                          std::to_string(kMaxNesting) + " levels");
-    } else if (ch == ']' || ch == '}') {
-      --depth;
-    }
-  }
-}
-
 json parse_json(std::string_view text) {
-  check_nesting(text);
+  if (std::optional<std::string> why = detail::json_nesting_error(text)) fail(Where{}, *why);
   try {
     return json::parse(text.begin(), text.end());
   } catch (const json::parse_error& e) {
     // what() reads "[json.exception.parse_error.101] parse error at line L, column C: why".
     const std::string what = e.what();
     const size_t at = what.find("line ");
-    fail(Where{}, "invalid JSON at " +
-                      (at == std::string::npos ? line_column_at(text, e.byte) : what.substr(at)));
+    fail(Where{},
+         "invalid JSON at " +
+             (at == std::string::npos ? detail::line_column_at(text, e.byte) : what.substr(at)));
   } catch (const json::out_of_range& e) {
     // A number too large for a double ("number overflow parsing '1e999'") carries no
     // position; the offending token's first occurrence gives one.
@@ -106,9 +66,10 @@ json parse_json(std::string_view text) {
         quote == std::string::npos ? "" : what.substr(quote + 1, what.size() - quote - 2);
     const size_t pos = token.empty() ? std::string_view::npos : text.find(token);
     const std::string why = what.substr(what.find(']') + 2);
-    fail(Where{}, "invalid JSON" +
-                      (pos == std::string_view::npos ? "" : " at " + line_column_at(text, pos)) +
-                      ": " + why);
+    fail(Where{},
+         "invalid JSON" +
+             (pos == std::string_view::npos ? "" : " at " + detail::line_column_at(text, pos)) +
+             ": " + why);
   }
 }
 

@@ -5,6 +5,7 @@
 // recomputing costs what `cslice compute` costs, a few milliseconds on the examples.
 #include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -14,6 +15,7 @@
 #include <sstream>
 
 #include "cslice/space.hpp"
+#include "parts/json_text.hpp"
 #include "space/space_build.hpp"
 
 namespace cslice {
@@ -81,6 +83,9 @@ long long read_integer(const json& v, const std::string& field) {
   if (!v.is_number_integer())
     fail_field(field, std::string("must be an integer, got ") +
                           (v.is_number() ? "a fraction" : v.type_name()));
+  // Above the long long range an unsigned integer would wrap (to -1 for 2^64 - 1).
+  if (v.is_number_unsigned() && v.get<unsigned long long>() > LLONG_MAX)
+    fail_field(field, "integer out of range: " + v.dump());
   return v.get<long long>();
 }
 
@@ -118,6 +123,8 @@ void expect_count(const std::string& field, long long stored, long long recomput
 }
 
 json parse_text(std::string_view text) {
+  // Far deeper than a valid file (7 levels) would overflow the stack where values are dumped.
+  if (std::optional<std::string> why = detail::json_nesting_error(text)) fail(*why);
   try {
     return json::parse(text.begin(), text.end());
   } catch (const json::parse_error& e) {
@@ -225,7 +232,7 @@ std::vector<detail::PlannedSlice> read_plan(const json& stored, const Pair& pair
     detail::PlannedSlice s;
     s.theta = number_field(stored[i], where, "theta");
     s.kind = read_kind(stored[i], where);
-    s.interval = static_cast<int>(integer_field(stored[i], where, "interval"));
+    const long long interval = integer_field(stored[i], where, "interval");
     if (!close(s.theta, plan[i].theta, pair.tol.angular))
       fail_field(field_name(where, "theta"), "the file says " + number_text(s.theta) +
                                                  ", the plan gives " + number_text(plan[i].theta));
@@ -233,7 +240,9 @@ std::vector<detail::PlannedSlice> read_plan(const json& stored, const Pair& pair
       fail_field(field_name(where, "kind"), "the file says \"" + std::string(to_string(s.kind)) +
                                                 "\", the plan gives \"" +
                                                 std::string(to_string(plan[i].kind)) + "\"");
-    expect_count(field_name(where, "interval"), s.interval, plan[i].interval);
+    // Compared as read: narrowed to int first, 2^32 + i would pass as i.
+    expect_count(field_name(where, "interval"), interval, plan[i].interval);
+    s.interval = plan[i].interval;
     out.push_back(s);
   }
   return out;
@@ -338,8 +347,13 @@ SlicedSpace read_space(const json& top, const Pair& pair, int threads) {
   check_topology(top, space);
   check_counts(top, space);
   if (const auto it = top.find("timing"); it != top.end() && it->is_object()) {
-    space.seconds_criticals = it->value("criticals_seconds", 0.0);
-    space.seconds_slices = it->value("slices_seconds", 0.0);
+    // Optional, but a value of another type is named (json::value would throw type_error).
+    const auto seconds = [&](const char* key) {
+      const auto v = it->find(key);
+      return v == it->end() ? 0.0 : read_number(*v, field_name("timing", key));
+    };
+    space.seconds_criticals = seconds("criticals_seconds");
+    space.seconds_slices = seconds("slices_seconds");
   }
   return space;
 }
