@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
+#include "criticals/families.hpp"
 #include "criticals/trig.hpp"
 #include "cslice/critical.hpp"
 #include "support/cli_run.hpp"
@@ -246,6 +247,51 @@ TEST(CriticalExamples, CountsAreInThePapersRange) {
       EXPECT_GT(set.orientations[i].theta - set.orientations[i - 1].theta,
                 testkit::load_example(name).tol.critical_angle);
   }
+}
+
+// The candidate culling rests on this (docs/criticals.md, "Candidates"): every contact segment
+// of a family at theta within half_width of theta_b lies within drift * |theta - theta_b| of
+// the family's cover at theta_b. Sampled on random curved pairs and on a lobed star with flat
+// arcs of large radius, whose circle families use the moving-point drift.
+TEST(CriticalCovers, HoldEveryContactSegmentWithinTheirDrift) {
+  std::vector<Pair> pairs;
+  for (unsigned seed = 7100; seed < 7106; ++seed) {
+    std::mt19937 rng(seed);
+    pairs.push_back(testkit::random_pair(rng, 4, 6, seed % 2 == 0).pair);
+  }
+  std::mt19937 rng(2026 + 12);
+  const testkit::StarPairLoops star = testkit::lobed_star_pair(rng, 12, 0.1, 0.5);
+  pairs.push_back(
+      testkit::parse_or_throw(testkit::pair_json("star", {star.moving}, {star.fixed}), "star"));
+  const double half_width = 0.05;
+  int checked = 0;
+  for (const Pair& pair : pairs) {
+    const auto moving = contact_features(pair.moving), fixed = contact_features(pair.fixed);
+    auto feature = [](const std::vector<ContactFeature>& fs, int index) {
+      return *std::find_if(fs.begin(), fs.end(), [&](auto& f) { return f.feature == index; });
+    };
+    for (const ContactFamily& family : contact_families(pair)) {
+      const ContactFeature m = feature(moving, family.moving), f = feature(fixed, family.fixed);
+      for (int b = 0; b < 16; ++b) {
+        const double mid = -kPi + (b + 0.5) * kTwoPi / 16;
+        const FamilyCover cover = family_cover_within(family, mid, half_width);
+        for (int k = -4; k <= 4; ++k) {
+          const double theta = mid + half_width * k / 4;
+          std::vector<ContactSegment> segments;
+          add_pair_contacts(pair, m, f, theta, segments);
+          for (const ContactSegment& s : segments)
+            for (double t : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+              const Vec2 p = point_at(s.curve, t);
+              EXPECT_LE(distance_to_curve(cover.curve, p),
+                        cover.drift * std::fabs(theta - mid) + pair.tol.geometric)
+                  << "family " << family.moving << "/" << family.fixed << " at " << theta;
+              ++checked;
+            }
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 1000);
 }
 
 TEST(CriticalParallel, OneAndTwoThreadsGiveTheSameSet) {

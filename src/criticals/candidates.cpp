@@ -40,20 +40,30 @@ std::vector<std::vector<int>> alive_families_by_bin(const std::vector<ContactFam
   return alive;
 }
 
+namespace {
+
+// A family's cover at theta, with the margin for orientations within half_width of it.
+BinEntry entry_at(const ContactFamily& family, int index, double theta, double half_width,
+                  double tolerance) {
+  BinEntry e;
+  e.family = index;
+  const FamilyCover cover = family_cover_within(family, theta, half_width);
+  e.cover = cover.curve;
+  e.margin = cover.drift * half_width + tolerance;
+  e.box = bounding_box(e.cover).inflated(e.margin);
+  return e;
+}
+
+}  // namespace
+
 std::vector<BinEntry> bin_entries(const std::vector<ContactFamily>& families,
                                   const std::vector<int>& alive, const Binning& binning, int bin,
                                   double tolerance) {
   const double mid = binning.lower(bin) + 0.5 * binning.width;
   std::vector<BinEntry> entries;
   entries.reserve(alive.size());
-  for (int i : alive) {
-    BinEntry e;
-    e.family = i;
-    e.cover = family_cover(families[i], mid);
-    e.margin = family_drift(families[i]) * 0.5 * binning.width + tolerance;
-    e.box = bounding_box(e.cover).inflated(e.margin);
-    entries.push_back(e);
-  }
+  for (int i : alive)
+    entries.push_back(entry_at(families[i], i, mid, 0.5 * binning.width, tolerance));
   std::sort(entries.begin(), entries.end(), [](const BinEntry& x, const BinEntry& y) {
     return x.box.lo.x < y.box.lo.x || (x.box.lo.x == y.box.lo.x && x.family < y.family);
   });
@@ -62,9 +72,31 @@ std::vector<BinEntry> bin_entries(const std::vector<ContactFamily>& families,
 
 namespace {
 
-// Two families can meet within the bin only if their covers come within their margins.
+// A lower bound on the distance between two curves, cheap where the exact one is not (arcs):
+// that between their whole circles, or between a segment and the other's circle.
+double circle_distance_bound(const Curve& a, const Curve& b) {
+  if (a.is_segment() && b.is_segment()) return 0.0;
+  if (a.is_arc() && b.is_arc()) {
+    const double d = distance(a.center, b.center);
+    return std::max({0.0, d - a.radius - b.radius, std::fabs(a.radius - b.radius) - d});
+  }
+  const Curve& s = a.is_segment() ? a : b;
+  const Curve& c = a.is_segment() ? b : a;
+  const double nearest = distance_to_curve(s, c.center);
+  const double farthest = std::max(distance(s.from, c.center), distance(s.to, c.center));
+  return std::max({0.0, nearest - c.radius, c.radius - farthest});
+}
+
+// Two families can meet within the bin only if their covers come within their margins. Ends
+// that close settle it at once (neighbours along the contact boundary share theirs).
 bool may_meet(const BinEntry& x, const BinEntry& y) {
-  return x.box.overlaps(y.box) && distance_between(x.cover, y.cover) <= x.margin + y.margin;
+  if (!x.box.overlaps(y.box)) return false;
+  const double reach = x.margin + y.margin;
+  for (Vec2 p : {x.cover.from, x.cover.to})
+    for (Vec2 q : {y.cover.from, y.cover.to})
+      if (distance(p, q) <= reach) return true;
+  if (circle_distance_bound(x.cover, y.cover) > reach) return false;
+  return distance_between(x.cover, y.cover) <= reach;
 }
 
 // The whole curve a cover lies on, as far as the pair reaches: the full circle of an arc,
@@ -79,35 +111,51 @@ Curve whole_curve(const Curve& c, double size) {
   return make_segment(c.from - reach, c.to + reach);
 }
 
-// Whether the third family can pass through a point where the first two meet within the
-// bin. Where the whole curves of covers x and y cross at an angle phi, a meeting of their
-// contact segments stays within the meeting of two bands as wide as their margins:
-// (margin_x + margin_y) / sin(phi) from the crossing (doubled for the curvature of arcs).
-// Whole curves that do not cross, or cross nearly tangentially, give no bound.
+// Where two covers' whole curves cross at an angle phi, a meeting of their contact segments
+// within the bin stays within the meeting of two bands as wide as their margins:
+// (margin_x + margin_y) / sin(phi) from the crossing (doubled for the curvature of arcs), its
+// `reach`. Whole curves that do not cross, or cross nearly tangentially, give no bound. A
+// crossing farther than its reach plus a margin from either cover holds no meeting: such
+// crossings (the far side of a circle, a line's extension) are dropped.
 struct WholeCrossing {
-  Curve wx, wy;
-  Intersection meet;
+  bool unbounded = false;
+  int count = 0;
+  std::array<Vec2, 2> point{};
+  std::array<double, 2> reach{};
 };
 
-WholeCrossing whole_crossing(const BinEntry& x, const BinEntry& y, double geometric, double size) {
-  WholeCrossing w{whole_curve(x.cover, size), whole_curve(y.cover, size), {}};
-  w.meet = intersect(w.wx, w.wy, geometric);
-  return w;
+bool within(const BinEntry& e, Vec2 p, double reach) {
+  const Box& b = e.box;  // already widened by the margin
+  if (p.x < b.lo.x - reach || p.x > b.hi.x + reach || p.y < b.lo.y - reach || p.y > b.hi.y + reach)
+    return false;
+  const double limit = e.margin + reach;
+  if (e.cover.is_arc() && std::fabs(distance(p, e.cover.center) - e.cover.radius) > limit)
+    return false;
+  return distance_to_curve(e.cover, p) <= limit;
 }
 
-bool may_meet_at(const BinEntry& x, const BinEntry& y, const WholeCrossing& w, const BinEntry& z,
-                 double size) {
-  const Intersection& meet = w.meet;
-  if (meet.kind == IntersectionKind::none || meet.kind == IntersectionKind::overlapping)
-    return true;
+WholeCrossing whole_crossing(const BinEntry& x, const BinEntry& y, double geometric, double size) {
+  const Curve wx = whole_curve(x.cover, size), wy = whole_curve(y.cover, size);
+  const Intersection meet = intersect(wx, wy, geometric);
+  WholeCrossing w;
+  if (meet.kind == IntersectionKind::none || meet.kind == IntersectionKind::overlapping) {
+    w.unbounded = true;
+    return w;
+  }
+  const double drift = 2.0 * (x.margin + y.margin);
   for (int h = 0; h < meet.count; ++h) {
     const IntersectionHit& hit = meet.hits[h];
-    const double sine = std::fabs(cross(tangent_at(w.wx, hit.ta0), tangent_at(w.wy, hit.tb0)));
-    const double drift = 2.0 * (x.margin + y.margin);
-    if (drift >= sine * size) return true;  // could drift across the whole pair
-    if (distance_to_curve(z.cover, hit.point) <= z.margin + drift / sine) return true;
+    const double sine = std::fabs(cross(tangent_at(wx, hit.ta0), tangent_at(wy, hit.tb0)));
+    if (drift >= sine * size) {  // could drift across the whole pair
+      w.unbounded = true;
+      return w;
+    }
+    const double reach = drift / sine;
+    if (!within(x, hit.point, reach) || !within(y, hit.point, reach)) continue;
+    w.point[w.count] = hit.point;
+    w.reach[w.count++] = reach;
   }
-  return false;
+  return w;
 }
 
 MeetingCandidate ordered(int a, int b, int c, int bin) {
@@ -117,31 +165,180 @@ MeetingCandidate ordered(int a, int b, int c, int bin) {
   return {f[0], f[1], f[2], bin};
 }
 
+// Two families that always share a defining end E (neighbours along the contact boundary: a
+// vertex contact and the contact of an adjacent edge, say) cross at E, which a triple point
+// may not be (three curves through an end is an endpoint event, and validation rejects it).
+// Their curves cross at most once more: never for two lines, at a chord of length 2 r sin(phi)
+// from E for a line and a circle of radius r crossing at angle phi, and at least
+// 2 r1 r2 sin(phi) / (r1 + r2) for two circles. Bounding phi from below over the bin bounds
+// that chord, and so the disc around E where no triple point of the two can lie.
+struct Exclusion {
+  Vec2 center;
+  double radius = 0.0;  // 0: none
+};
+
+// How fast (radians per radian of theta) the family's curve turns at its end e: a fixed line
+// not at all, a turning line with theta, a circle as the radius to e turns.
+double turn_rate(const ContactFamily& f, const MovingPoint& e) {
+  if (f.shape == FamilyShape::fixed_line) return 0.0;
+  if (f.shape == FamilyShape::turning_line) return 1.0;
+  return length(e.q - f.center.q) / f.radius;
+}
+
+Vec2 direction_at(const ContactFamily& f, const MovingPoint& e, double theta) {
+  if (f.shape != FamilyShape::circle) return normalized(f.ends[1].at(theta) - f.ends[0].at(theta));
+  return perp_left(normalized(e.at(theta) - f.center.at(theta)));
+}
+
+const MovingPoint* shared_end(const ContactFamily& x, const ContactFamily& y, double eps,
+                              const MovingPoint*& other) {
+  for (const MovingPoint& ex : x.ends)
+    for (const MovingPoint& ey : y.ends)
+      if (distance(ex.p, ey.p) <= eps && distance(ex.q, ey.q) <= eps) {
+        other = &ey;
+        return &ex;
+      }
+  return nullptr;
+}
+
+Exclusion shared_end_exclusion(const ContactFamily& x, const ContactFamily& y,
+                               const BinScope& scope) {
+  const MovingPoint* ey = nullptr;
+  const MovingPoint* ex = shared_end(x, y, scope.geometric, ey);
+  if (!ex || x.is_point() || y.is_point()) return {};
+  const double half = 0.5 * scope.binning.width;
+  const double mid = scope.binning.lower(scope.bin) + half;
+  const double sine = std::fabs(cross(direction_at(x, *ex, mid), direction_at(y, *ey, mid)));
+  const double phi =
+      std::asin(std::min(sine, 1.0)) - (turn_rate(x, *ex) + turn_rate(y, *ey)) * half;
+  if (phi <= 0.0) return {};
+  // The ends agree to the geometric epsilon only, so the curves cross near E, off it by that
+  // over sin(phi): it must stay well inside the tolerance that makes the crossing an end.
+  const double s = std::sin(phi);
+  if (s * scope.tolerance < 8.0 * scope.geometric) return {};
+  double chord = 4.0 * scope.size;  // two lines: no second crossing within the pair's reach
+  if (x.shape == FamilyShape::circle && y.shape == FamilyShape::circle)
+    chord = 2.0 * x.radius * y.radius * s / (x.radius + y.radius);
+  else if (x.shape == FamilyShape::circle || y.shape == FamilyShape::circle)
+    chord = 2.0 * (x.shape == FamilyShape::circle ? x.radius : y.radius) * s;
+  // E itself moves within the bin.
+  const double radius = chord - length(ex->q) * half - scope.tolerance;
+  return radius > 0.0 ? Exclusion{ex->at(mid), radius} : Exclusion{};
+}
+
+// Whether the third family can pass through a point where the first two meet within the bin,
+// away from the disc `ex` where they cannot make a triple point.
+bool may_meet_at(const WholeCrossing& w, const BinEntry& z, const Exclusion& ex) {
+  if (w.unbounded) return true;
+  for (int h = 0; h < w.count; ++h) {
+    if (distance(w.point[h], ex.center) + w.reach[h] < ex.radius) continue;
+    if (within(z, w.point[h], w.reach[h])) return true;
+  }
+  return false;
+}
+
+class BinMeeting {
+ public:
+  BinMeeting(const std::vector<BinEntry>& entries, const BinScope& scope)
+      : entries_(entries), scope_(scope), near_(entries.size()) {}
+
+  void run(std::vector<MeetingCandidate>& pairs, std::vector<MeetingCandidate>& triples) {
+    find_pairs(pairs);
+    for (size_t i = 0; i < entries_.size(); ++i)
+      for (size_t n = 0; n < near_[i].size(); ++n)
+        if (near_[i][n].index > int(i)) add_triples(int(i), int(n), triples);
+  }
+
+ private:
+  // A neighbour, and the shared end the two have (an index into shared_; -1 when none, -2
+  // when not looked up yet).
+  struct Neighbour {
+    int index = 0;
+    int shared = -2;
+  };
+  struct Shared {
+    Exclusion exclusion;
+    std::optional<WholeCrossing> crossing;  // computed when first needed
+  };
+
+  void find_pairs(std::vector<MeetingCandidate>& pairs) {
+    const auto& e = entries_;
+    for (size_t i = 0; i < e.size(); ++i)
+      for (size_t j = i + 1; j < e.size() && e[j].box.lo.x <= e[i].box.hi.x; ++j)
+        if (may_meet(e[i], e[j])) {
+          near_[i].push_back({int(j)});
+          near_[j].push_back({int(i)});
+          pairs.push_back(ordered(e[i].family, e[j].family, -1, scope_.bin));
+        }
+    for (auto& n : near_)
+      std::sort(n.begin(), n.end(), [](Neighbour x, Neighbour y) { return x.index < y.index; });
+  }
+
+  // The position of k among i's neighbours, or -1.
+  int find(int i, int k) const {
+    const auto& n = near_[i];
+    auto it =
+        std::lower_bound(n.begin(), n.end(), k, [](Neighbour x, int v) { return x.index < v; });
+    return it != n.end() && it->index == k ? int(it - n.begin()) : -1;
+  }
+
+  // The shared end of i and its n-th neighbour with its exclusion, or null; looked up once.
+  Shared* shared(int i, int n) {
+    Neighbour& x = near_[i][n];
+    if (x.shared == -2) {
+      const auto& fam = *scope_.families;
+      const Exclusion ex =
+          shared_end_exclusion(fam[entries_[i].family], fam[entries_[x.index].family], scope_);
+      x.shared = -1;
+      if (ex.radius > 0.0) {
+        x.shared = int(shared_.size());
+        shared_.push_back({ex, std::nullopt});
+      }
+      near_[x.index][find(x.index, i)].shared = x.shared;
+    }
+    return x.shared >= 0 ? &shared_[x.shared] : nullptr;
+  }
+
+  // Every k after j that meets both i and j (i < j, j the n-th neighbour of i).
+  void add_triples(int i, int n, std::vector<MeetingCandidate>& triples) {
+    const int j = near_[i][n].index;
+    std::optional<WholeCrossing> crossing;
+    for (size_t m = 0; m < near_[j].size(); ++m) {
+      const int k = near_[j][m].index;
+      const int ik = k > j ? find(i, k) : -1;
+      if (ik < 0) continue;
+      const BinEntry &x = entries_[i], &y = entries_[j], &z = entries_[k];
+      if (!crossing) crossing = whole_crossing(x, y, scope_.geometric, scope_.size);
+      const Shared* xy = shared(i, n);
+      if (!may_meet_at(*crossing, z, xy ? xy->exclusion : Exclusion{})) continue;
+      // Each pair that shares an end narrows where the triple point can be.
+      if (!passes_shared(i, ik, j) || !passes_shared(j, int(m), i)) continue;
+      triples.push_back(ordered(x.family, y.family, z.family, scope_.bin));
+    }
+  }
+
+  // The triple test with x, y = entry a and its n-th neighbour, z = entry c.
+  bool passes_shared(int a, int n, int c) {
+    Shared* s = shared(a, n);
+    if (!s) return true;
+    if (!s->crossing)
+      s->crossing =
+          whole_crossing(entries_[a], entries_[near_[a][n].index], scope_.geometric, scope_.size);
+    return may_meet_at(*s->crossing, entries_[c], s->exclusion);
+  }
+
+  const std::vector<BinEntry>& entries_;
+  const BinScope& scope_;
+  std::vector<std::vector<Neighbour>> near_;
+  std::vector<Shared> shared_;
+};
+
 }  // namespace
 
-void meeting_candidates(const std::vector<BinEntry>& entries, int bin, double geometric,
-                        double size, std::vector<MeetingCandidate>& pairs,
+void meeting_candidates(const std::vector<BinEntry>& entries, const BinScope& scope,
+                        std::vector<MeetingCandidate>& pairs,
                         std::vector<MeetingCandidate>& triples) {
-  std::vector<std::vector<int>> neighbours(entries.size());
-  for (size_t i = 0; i < entries.size(); ++i)
-    for (size_t j = i + 1; j < entries.size() && entries[j].box.lo.x <= entries[i].box.hi.x; ++j)
-      if (may_meet(entries[i], entries[j])) {
-        neighbours[i].push_back(int(j));
-        neighbours[j].push_back(int(i));
-        pairs.push_back(ordered(entries[i].family, entries[j].family, -1, bin));
-      }
-  for (auto& n : neighbours) std::sort(n.begin(), n.end());
-  for (size_t i = 0; i < entries.size(); ++i)
-    for (int j : neighbours[i]) {
-      if (j <= int(i)) continue;
-      std::optional<WholeCrossing> crossing;  // computed when a third family needs it
-      for (int k : neighbours[j]) {
-        if (k <= j || !std::binary_search(neighbours[i].begin(), neighbours[i].end(), k)) continue;
-        if (!crossing) crossing = whole_crossing(entries[i], entries[j], geometric, size);
-        if (may_meet_at(entries[i], entries[j], *crossing, entries[k], size))
-          triples.push_back(ordered(entries[i].family, entries[j].family, entries[k].family, bin));
-      }
-    }
+  BinMeeting(entries, scope).run(pairs, triples);
 }
 
 void MeetingTask::add_run(int first, int last) {

@@ -48,10 +48,20 @@ struct MeetingCandidate {
   friend auto operator<=>(const MeetingCandidate&, const MeetingCandidate&) = default;
 };
 
-// The pairs and triples of one bin's entries that may meet within it. `size` is the pair's
-// size (a crossing so shallow that it could drift across all of it gives no bound).
-void meeting_candidates(const std::vector<BinEntry>& entries, int bin, double geometric,
-                        double size, std::vector<MeetingCandidate>& pairs,
+// Where a bin lies and what its meeting test needs besides the entries: the families (their
+// shared ends bound where a triple can be), the criticality tolerance, the geometric epsilon
+// for crossings, and the pair's size (a crossing so shallow that it could drift across all of
+// it gives no bound).
+struct BinScope {
+  const std::vector<ContactFamily>* families = nullptr;
+  Binning binning{1};
+  int bin = 0;
+  double tolerance = 0.0, geometric = 0.0, size = 1.0;
+};
+
+// The pairs and triples of one bin's entries that may meet within it.
+void meeting_candidates(const std::vector<BinEntry>& entries, const BinScope& scope,
+                        std::vector<MeetingCandidate>& pairs,
                         std::vector<MeetingCandidate>& triples);
 
 // Candidates grouped: each distinct pair or triple once, with the bins where it may meet as

@@ -90,6 +90,10 @@ struct Context {
     return bin_entries(families, alive[bin], binning, bin, pair.tol.criticality);
   }
 
+  BinScope scope(int bin) const {
+    return {&families, binning, bin, pair.tol.criticality, pair.tol.geometric, pair.tol.size};
+  }
+
   const Pair& pair;
   CriticalOptions options;
   Pair screen_pair;
@@ -344,8 +348,7 @@ class CriticalFinder {
       tbb::enumerable_thread_specific<Found> per_thread;
       tbb::parallel_for(first, std::min(first + kBlock, ctx_.binning.count), [&](int b) {
         Found& f = per_thread.local();
-        meeting_candidates(ctx_.entries(b), b, ctx_.pair.tol.geometric, ctx_.pair.tol.size, f.pairs,
-                           f.triples);
+        meeting_candidates(ctx_.entries(b), ctx_.scope(b), f.pairs, f.triples);
       });
       std::vector<MeetingCandidate> block_pairs, block_triples;
       for (Found& f : per_thread) {

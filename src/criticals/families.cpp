@@ -9,6 +9,8 @@
 #include "criticals/families.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 
 namespace cslice {
 
@@ -41,6 +43,22 @@ ContactFamily segment_on_disc(const ContactFeature& m, const ContactFeature& f) 
   return fam;
 }
 
+// The largest |c_m + rho u(mu)| over the moving normals mu: how fast a contact point followed
+// at a fixed moving normal moves (its derivative in theta is that vector turned by R).
+double moving_point_speed(const ContactFamily& f) {
+  const double rho = f.inward ? -f.radius : f.radius;
+  const Vec2 c = -f.center.q;
+  const AngleInterval& n = f.moving_normals;
+  double v =
+      std::max(length(c + rho * unit_vector(n.lo)), length(c + rho * unit_vector(n.lo + n.span)));
+  // The farthest point of the whole circle from the origin, if the normals reach it.
+  double far = std::atan2(c.y, c.x) + (rho < 0.0 ? kPi : 0.0);
+  double d = std::fmod(far - n.lo, kTwoPi);
+  if (d < 0.0) d += kTwoPi;
+  if (is_full(n) || d <= n.span) v = std::max(v, length(c) + std::fabs(rho));
+  return v;
+}
+
 ContactFamily disc_on_disc(const ContactFeature& m, const ContactFeature& f, double eps) {
   ContactFamily fam;
   fam.shape = FamilyShape::circle;
@@ -55,6 +73,7 @@ ContactFamily disc_on_disc(const ContactFeature& m, const ContactFeature& f, dou
     fam.ends = {fam.center};
     return fam;
   }
+  fam.point_speed = moving_point_speed(fam);
   std::vector<double> fixed_ends, moving_ends;
   if (!is_full(f.normals)) fixed_ends = {f.normals.lo, f.normals.lo + f.normals.span};
   if (!is_full(m.normals)) moving_ends = {m.normals.lo, m.normals.lo + m.normals.span};
@@ -130,6 +149,49 @@ double family_drift(const ContactFamily& family) {
   // A full fixed circle's cover turns with the moving normals.
   const bool turns = family.fixed_normals.span >= kTwoPi;
   return length(family.center.q) + (turns ? family.radius : 0.0);
+}
+
+namespace {
+
+AngleInterval widened(const AngleInterval& a, double by) {
+  return is_full(a) ? a : AngleInterval{a.lo - by, std::min(a.span + 2.0 * by, kTwoPi)};
+}
+
+// The meeting of two angle intervals when it is one piece (possibly empty: span < 0).
+std::optional<AngleInterval> meeting(const AngleInterval& a, const AngleInterval& b) {
+  if (is_full(a)) return b;
+  if (is_full(b)) return a;
+  double d = std::fmod(b.lo - a.lo, kTwoPi);  // where b starts, seen from a.lo
+  if (d < 0.0) d += kTwoPi;
+  if (d <= a.span) {
+    if (d + b.span > kTwoPi) return std::nullopt;  // b wraps back into a: two pieces
+    return AngleInterval{a.lo + d, std::min(a.span - d, b.span)};
+  }
+  const double into = b.span - (kTwoPi - d);  // how far b reaches past a.lo
+  return AngleInterval{a.lo, into < 0.0 ? -1.0 : std::min(a.span, into)};
+}
+
+}  // namespace
+
+FamilyCover family_cover_within(const ContactFamily& family, double theta, double half_width) {
+  const auto loose = [&] { return FamilyCover{family_cover(family, theta), family_drift(family)}; };
+  if (family.shape != FamilyShape::circle || family.radius == 0.0) return loose();
+  // Followed at a fixed normal n, a contact point moves with the centre, and n stays in N_f;
+  // followed at a fixed moving normal mu, it moves as the moving feature's point, and
+  // theta + pi + mu stays in the facing normals at theta. The other interval is widened by
+  // the half-width: the contact at theta + d has n in both N_f and the normals facing then.
+  const AngleInterval facing{family.moving_normals.lo + theta + kPi, family.moving_normals.span};
+  const double by_centre = length(family.center.q), by_point = family.point_speed;
+  const bool centre = by_centre <= by_point;
+  const std::optional<AngleInterval> normals =
+      centre ? meeting(family.fixed_normals, widened(facing, half_width))
+             : meeting(widened(family.fixed_normals, half_width), facing);
+  if (!normals || normals->span < 0.0) return loose();
+  const Vec2 c = family.center.at(theta);
+  const double drift = centre ? by_centre : by_point;
+  if (is_full(*normals)) return {make_circle(c, family.radius), drift};
+  const double start = normals->lo + (family.inward ? kPi : 0.0);
+  return {make_arc(c, family.radius, start, normals->span), drift};
 }
 
 FamilyEquation family_equation(const ContactFamily& family) {

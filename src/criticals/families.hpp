@@ -35,6 +35,9 @@ struct ContactFamily {
   // Circles only: the normal intervals of the two features (the fixed one in the world, the
   // moving one in the body frame), which bound the contact arc.
   AngleInterval fixed_normals, moving_normals;
+  // Circles only: the largest |c_m + rho u(mu)| over the moving normals mu, how fast a contact
+  // point followed at a fixed moving normal moves (family_cover_within).
+  double point_speed = 0.0;
   // Orientations where the pair touches: [alive.lo, alive.lo + alive.span]; span >= 2pi
   // means always.
   AngleInterval alive;
@@ -62,6 +65,19 @@ Curve family_cover(const ContactFamily& family, double theta);
 // How far (per radian of theta) any point of the cover can move: no point of the family's
 // contact segments at theta + d lies farther than |d| times this from the cover at theta.
 double family_drift(const ContactFamily& family);
+
+// A tighter cover for the orientations within half_width of theta, and its drift (per radian,
+// as above). A circle family's contact arc at theta + d spans the fixed normals that face the
+// moving ones, N_f and theta + d + pi + N_m, so its cover needs only their meeting, one of the
+// two widened by half_width; and each contact point, followed at a fixed moving normal, moves with
+// the moving feature's point there (|c_m + rho u(mu)| per radian), which is far slower than the
+// circle's centre when the moving feature is a flat arc of large radius. Lines, and circles
+// whose narrowed normals would be two pieces, keep family_cover and family_drift.
+struct FamilyCover {
+  Curve curve;
+  double drift = 0.0;
+};
+FamilyCover family_cover_within(const ContactFamily& family, double theta, double half_width);
 
 // The family's curve as an implicit equation g(X, theta) = w |X|^2 + a(theta) . X + b(theta)
 // (w = 0 for lines, whose normal `a` is a unit vector; w = 1 for circles).
