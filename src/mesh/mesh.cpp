@@ -14,6 +14,7 @@
 #include <deque>
 #include <limits>
 #include <map>
+#include <optional>
 #include <unordered_set>
 
 #include "mesh/mesh_internal.hpp"
@@ -104,7 +105,10 @@ class MeshBuilder {
     const double critical_angle =
         pair ? pair->tol.critical_angle : kCriticalityPerGeometric * kRelativeGeometricEpsilon;
     theta_snap_ = kMeshPlaneSnapPerTolerance * critical_angle;
-    if (pair) min_step_ = side_slice_angle(pair->tol);
+    if (pair) {
+      min_step_ = side_slice_angle(pair->tol);
+      slicer_.emplace(*pair);
+    }
   }
 
   ContactMesh build() {
@@ -141,6 +145,7 @@ class MeshBuilder {
   const SlicedSpace& space_;
   const MeshOptions& options_;
   const Pair* pair_;
+  std::optional<Slicer> slicer_;  // with the pair: the true slices that check the strips
   ContactMesh mesh_;
   VertexStore store_;
   std::vector<std::optional<SampledSlice>> sampled_;
@@ -303,7 +308,7 @@ class MeshBuilder {
     for (const Band& band : r.bands) tile_band(band, store_, out.triangles);
     if (!pair_) return out;
     // The true slice halfway: kept, as a refined slice may be made of it.
-    refined_.push_back(compute_slice(*pair_, wrap_angle(0.5 * (a.theta + b.theta))));
+    refined_.push_back(slicer_->slice(wrap_angle(0.5 * (a.theta + b.theta))));
     const Slice& truth = refined_.back();
     const double allowed = mesh_.chord_tolerance + mesh_.interpolation_tolerance;
     const double deviation = measure(out.triangles, 0.5 * (a.theta + b.theta), truth, allowed);
