@@ -99,6 +99,11 @@ std::vector<ContactSegment> contact_segments(const Pair& pair, double theta);
 // The whole slice at theta.
 Slice compute_slice(const Pair& pair, double theta);
 
+// Ids of the realizable contact segments, sorted, each once: the contact graph's nodes, plus
+// any segment a realizable piece or a degenerate contact names. Pieces name only the lowest
+// of coincident segments, so pieces alone would miss the others.
+std::vector<int> realizable_segments(const Slice& slice);
+
 // Many slices of one pair (the engine behind compute_slice): the features' contact data and
 // the placement tester's indexes are built once instead of per slice. Not thread-safe, as
 // it keeps scratch state: one per thread. The pair must outlive it.

@@ -16,9 +16,7 @@ namespace cslice {
 // "feature N".
 std::string describe_feature(const Part& part, int feature);
 
-// Ids of the realizable contact segments: the contact graph's nodes, plus any segment a
-// realizable piece or a degenerate contact names. Pieces name only the lowest of coincident
-// segments, so pieces alone would miss the others.
+// realizable_segments (slice.hpp) as a set, for look-ups by id.
 std::set<int> realizable_segment_ids(const Slice& slice);
 
 // The slice as JSON text (format "cslice-slice", version 1), ending in a newline.

@@ -291,6 +291,16 @@ int Slice::locate(Vec2 p) const {
   return -1;
 }
 
+std::vector<int> realizable_segments(const Slice& slice) {
+  std::vector<int> ids = slice.contact_graph.nodes;
+  for (const ContactPiece& p : slice.realizable) ids.push_back(p.segment);
+  for (const DegenerateContact& d : slice.degenerate)
+    ids.insert(ids.end(), d.segments.begin(), d.segments.end());
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
+
 struct Slicer::State {
   explicit State(const Pair& p) : pair(p), contacts(p) {}
   const Pair& pair;

@@ -122,11 +122,8 @@ json counts_json(const Slice& slice, const std::set<int>& realizable) {
 }  // namespace
 
 std::set<int> realizable_segment_ids(const Slice& slice) {
-  std::set<int> ids(slice.contact_graph.nodes.begin(), slice.contact_graph.nodes.end());
-  for (const ContactPiece& p : slice.realizable) ids.insert(p.segment);
-  for (const DegenerateContact& d : slice.degenerate)
-    ids.insert(d.segments.begin(), d.segments.end());
-  return ids;
+  const std::vector<int> ids = realizable_segments(slice);
+  return {ids.begin(), ids.end()};
 }
 
 std::string describe_feature(const Part& part, int feature) {

@@ -156,16 +156,10 @@ double interpolation_step(double reach, double tolerance) {
 
 std::vector<SegmentLabel> realizable_labels(const Slice& slice) {
   std::vector<SegmentLabel> out;
-  // The segments of realizable_segment_ids, without building its set: ids number the
-  // segments, and repeats go with the labels' sort below.
-  const auto add = [&](int id) {
-    const ContactSegment& s = slice.contact_segments.at(id);
+  for (int id : realizable_segments(slice)) {
+    const ContactSegment& s = slice.contact_segments.at(id);  // ids number the segments
     out.push_back({s.moving_feature, s.fixed_feature});
-  };
-  for (int id : slice.contact_graph.nodes) add(id);
-  for (const ContactPiece& p : slice.realizable) add(p.segment);
-  for (const DegenerateContact& d : slice.degenerate)
-    for (int id : d.segments) add(id);
+  }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
