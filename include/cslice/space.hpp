@@ -61,7 +61,7 @@ struct SpaceCell {
   double theta_from = 0.0, theta_to = 0.0;
   int component = 0;  // its 3D free component
   bool bounded = true;
-  double min_area = 0.0, max_area = 0.0;  // over its slices; NaN when unbounded
+  double min_area = 0.0, max_area = 0.0;  // over its stored slices; NaN when unbounded
   // A free configuration of the cell: a component sample in the interval's representative
   // slice (its middle), or in the slice nearest it when the cell is missing there.
   double sample_theta = 0.0;
@@ -126,6 +126,9 @@ struct TopologyChecks {
   // Not a failure either: consecutive slices of an interval matched by their components'
   // boundary labels (all distinct) where even refinement left samples unmatched.
   int label_matches = 0;
+  // Not a failure: critical orientations with at most one free component in the intervals on
+  // either side, whose joins follow from the counts (no side slices; see compute_topology).
+  int joins_by_count = 0;
   std::vector<std::string> problems;  // the first few, in words
 };
 
@@ -148,6 +151,15 @@ struct SpaceOptions {
   CriticalOptions critical;
   int threads = 0;          // slices computed at once; 0 lets oneTBB choose (every core)
   ProgressReport progress;  // optional
+  // Side slices and sample rules at every critical orientation, even where the component
+  // counts decide the joins, each side slice checked against its interval's representative:
+  // the same result (the tests compare), slower; it checks the critical orientations more.
+  bool verify_joins = false;
+};
+
+struct TopologyOptions {
+  int threads = 0;            // as in SpaceOptions
+  bool verify_joins = false;  // as in SpaceOptions
 };
 
 struct SlicedSpace {
@@ -175,9 +187,11 @@ SlicedSpace compute_space(const Pair& pair, const SpaceOptions& options = {});
 
 // The 3D topology of a space whose slices and criticals are computed: cells, their joins
 // across the critical orientations, the 3D free components. Computes two side slices per
-// critical orientation (in parallel, `threads` as in SpaceOptions) where the intervals' own
-// slices are further than side_slice_angle from it. compute_space calls it.
-SpaceTopology compute_topology(const Pair& pair, const SlicedSpace& space, int threads = 0);
+// critical orientation (in parallel) where the intervals' own slices are further than
+// side_slice_angle from it, except where at most one free component lies on either side
+// (then the joins follow from the counts) unless options.verify_joins. compute_space calls it.
+SpaceTopology compute_topology(const Pair& pair, const SlicedSpace& space,
+                               const TopologyOptions& options = {});
 
 // The side-slice angle delta of the joins across a critical orientation: side slices lie at
 // most this far from it (src/space/topology.cpp explains the choice).

@@ -1,5 +1,5 @@
-// `cslice compute PAIR.json -o SPACE.json [--threads N]`: the sliced configuration space of a
-// pair (critical orientations, slices, correspondence), as JSON (docs/space-format.md).
+// `cslice compute PAIR.json -o SPACE.json [--threads N] [--verify-joins]`: the sliced configuration
+// space of a pair (critical orientations, slices, correspondence), as JSON (docs/space-format.md).
 #include <memory>
 #include <optional>
 
@@ -15,6 +15,7 @@ struct ComputeCommand {
   std::string pair_path;
   std::string out_path;
   int threads = 0;
+  bool verify_joins = false;
 };
 
 void run(const ComputeCommand& cmd) {
@@ -22,6 +23,7 @@ void run(const ComputeCommand& cmd) {
   if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
   SpaceOptions options;
   options.threads = cmd.threads;
+  options.verify_joins = cmd.verify_joins;
   std::optional<ProgressLine> progress(std::in_place, "cslice compute");
   options.progress = progress->report();
   const SlicedSpace space = compute_space(pair, options);
@@ -43,6 +45,9 @@ void register_compute(CLI::App& app) {
       ->required();
   sub->add_option("--threads", cmd->threads,
                   "Slices computed at once (default 0: every core); the output is the same");
+  sub->add_flag("--verify-joins", cmd->verify_joins,
+                "Side slices at every critical orientation, each checked against its interval,\n"
+                "even where the free-component counts decide the joins (slower; same result)");
   sub->callback([cmd] { run(*cmd); });
 }
 

@@ -185,7 +185,7 @@ SlicedSpace compute_space(const Pair& pair, const SpaceOptions& options) {
                                         options.threads, options.progress);
   space.correspondence = detail::slice_correspondences(space.slices);
   report("topology", 0, 1);
-  space.topology = compute_topology(pair, space, options.threads);
+  space.topology = compute_topology(pair, space, {options.threads, options.verify_joins});
   report("topology", 1, 1);
   space.seconds_slices = seconds_since(start);
   return space;

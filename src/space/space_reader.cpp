@@ -343,7 +343,7 @@ SlicedSpace read_space(const json& top, const Pair& pair, int threads) {
   space.slices = detail::compute_slices(pair, plan, threads);
   for (size_t i = 0; i < stored.size(); ++i) check_slice(stored[i], i, space.slices[i], pair);
   space.correspondence = detail::slice_correspondences(space.slices);
-  space.topology = compute_topology(pair, space, threads);
+  space.topology = compute_topology(pair, space, {threads, false});
   check_topology(top, space);
   check_counts(top, space);
   if (const auto it = top.find("timing"); it != top.end() && it->is_object()) {

@@ -58,8 +58,8 @@ int component_count(const Slice& s) {
 
 class TopologyBuilder {
  public:
-  TopologyBuilder(const Pair& pair, const SlicedSpace& space, int threads)
-      : pair_(pair), space_(space), threads_(threads) {}
+  TopologyBuilder(const Pair& pair, const SlicedSpace& space, const TopologyOptions& options)
+      : pair_(pair), space_(space), options_(options) {}
 
   SpaceTopology build() {
     plan_intervals();
@@ -76,7 +76,7 @@ class TopologyBuilder {
   // One slice of an interval's chain: a stored slice or a side slice.
   struct Link {
     const Slice* slice = nullptr;
-    int stored = -1;     // index into space.slices, or -1 for a side slice
+    int stored = -1;     // index into space.slices, or -1 for a side or refinement slice
     int first_node = 0;  // node of its component 0
   };
 
@@ -114,14 +114,16 @@ class TopologyBuilder {
   // The side slices of each critical orientation, before and after it: the interval's
   // nearest stored slice when it lies within the side angle delta (always so for an interval
   // narrower than 2 delta, whose middle slice is then used), otherwise an extra slice at
-  // theta_k -+ delta. Extra ones are computed in parallel and stored by index: the same
-  // whatever the thread count.
+  // theta_k -+ delta. None is computed where the component counts decide the joins (below)
+  // unless options_.verify_joins. Extra ones are computed in parallel and stored by index: the
+  // same whatever the thread count.
   void compute_side_slices() {
     const int n = static_cast<int>(criticals_.size());
     const double delta = side_slice_angle(pair_.tol);
     std::vector<double> thetas(2 * n);
     side_angles_.assign(2 * n, 0.0);
     has_side_.assign(2 * n, 0);
+    by_count_.assign(n, 0);
     for (int k = 0; k < n; ++k) {
       const int before = (k + n - 1) % n;
       const double gap_before =
@@ -129,15 +131,30 @@ class TopologyBuilder {
       const double gap_after = offset_from(criticals_[k], space_.slices[stored_[k].front()].theta);
       side_angles_[2 * k] = std::min(gap_before, delta);
       side_angles_[2 * k + 1] = std::min(gap_after, delta);
-      has_side_[2 * k] = gap_before > delta;
-      has_side_[2 * k + 1] = gap_after > delta;
+      by_count_[k] = !options_.verify_joins && joins_follow_from_counts(before, k);
+      has_side_[2 * k] = gap_before > delta && !by_count_[k];
+      has_side_[2 * k + 1] = gap_after > delta && !by_count_[k];
       thetas[2 * k] = wrap_angle(criticals_[k] - delta);
       thetas[2 * k + 1] = wrap_angle(criticals_[k] + delta);
     }
     sides_.resize(thetas.size());
-    detail::for_each_index_parallel(pair_, thetas.size(), threads_, [&](size_t i, Slicer& s) {
-      if (has_side_[i]) sides_[i] = s.slice(thetas[i]);
-    });
+    detail::for_each_index_parallel(pair_, thetas.size(), options_.threads,
+                                    [&](size_t i, Slicer& s) {
+                                      if (has_side_[i]) sides_[i] = s.slice(thetas[i]);
+                                    });
+  }
+
+  // With at most one free component in the slices of the interval before critical
+  // orientation k and at most one in those after (all slices of an interval are equivalent),
+  // the sample rules of `transition` can only join every free component of the critical
+  // slice to the one before and the one after: a sample C of the critical slice is free with
+  // its clearance, so free at theta_k -+ delta too, in the only component there. With no free
+  // component at theta_k, nothing joins across. So no side slice is needed there.
+  bool joins_follow_from_counts(int before, int after) const {
+    const auto count = [&](int interval) {
+      return component_count(space_.slices[stored_[interval].front()].slice);
+    };
+    return count(before) <= 1 && count(after) <= 1;
   }
 
   // Each interval's slices in theta order: the side slice after its starting critical
@@ -156,6 +173,8 @@ class TopologyBuilder {
       for (int s : stored_[i]) add(i, &space_.slices[s].slice, s);
       if (crit > 0 && has_side_[2 * ((i + 1) % crit)]) add(i, &sides_[2 * ((i + 1) % crit)], -2);
     }
+    topo_.checks.joins_by_count =
+        static_cast<int>(std::count(by_count_.begin(), by_count_.end(), char{1}));
     nodes_ = UnionFind(nodes);
     refined_links_.assign(n, {});
     for (int i = 0; i < n; ++i) {
@@ -289,7 +308,9 @@ class TopologyBuilder {
           if (root_cell[root] < 0) root_cell[root] = new_cell(i, *link.slice, c);
           const int cell = root_cell[root];
           node_cell_[link.first_node + c] = cell;
-          add_area(topo_.cells[cell], link.slice->free_components[c]);
+          // Areas over the stored slices only: the side and refinement slices computed depend
+          // on options_.verify_joins, the result must not.
+          if (link.stored >= 0) add_area(topo_.cells[cell], link.slice->free_components[c]);
         }
       }
       for (const Link& link : chains_[i]) {
@@ -351,23 +372,12 @@ class TopologyBuilder {
     // Elements: before components [0, nb), after [nb, nb + na), critical [nb + na, ...).
     UnionFind local(nb + na + nc);
     const int B0 = nb, C0 = nb + na;
-    for (int a = 0; a < nb; ++a) {
-      const Vec2 p = sb.free_components[a].sample;
-      const int c = sc.locate(p), b = sa.locate(p);
-      if (c >= 0) local.unite(a, C0 + c);
-      if (c >= 0 && b >= 0) local.unite(a, B0 + b);
-    }
-    for (int b = 0; b < na; ++b) {
-      const Vec2 p = sa.free_components[b].sample;
-      const int c = sc.locate(p), a = sb.locate(p);
-      if (c >= 0) local.unite(B0 + b, C0 + c);
-      if (c >= 0 && a >= 0) local.unite(B0 + b, a);
-    }
-    for (int c = 0; c < nc; ++c) {
-      const Vec2 p = sc.free_components[c].sample;
-      const int a = sb.locate(p), b = sa.locate(p);
-      if (a >= 0) local.unite(C0 + c, a);
-      if (b >= 0) local.unite(C0 + c, B0 + b);
+    if (by_count_[k]) {
+      // At most one component on each side (joins_follow_from_counts).
+      for (int x = 1; x < nb + na + nc; ++x)
+        if (nc > 0) local.unite(0, x);
+    } else {
+      join_by_samples(sb, sa, sc, local);
     }
     // Components of one cell are one (they differ only after a reported match failure).
     for (int x = 0; x < nb; ++x)
@@ -432,6 +442,30 @@ class TopologyBuilder {
     std::sort(t.joins.begin(), t.joins.end());
     topo_.checks.orphan_critical_components += t.orphan_critical_components;
     topo_.transitions.push_back(std::move(t));
+  }
+
+  // The sample rules of `transition`, with components numbered as there.
+  static void join_by_samples(const Slice& sb, const Slice& sa, const Slice& sc, UnionFind& local) {
+    const int nb = component_count(sb), na = component_count(sa);
+    const int B0 = nb, C0 = nb + na;
+    for (int a = 0; a < nb; ++a) {
+      const Vec2 p = sb.free_components[a].sample;
+      const int c = sc.locate(p), b = sa.locate(p);
+      if (c >= 0) local.unite(a, C0 + c);
+      if (c >= 0 && b >= 0) local.unite(a, B0 + b);
+    }
+    for (int b = 0; b < na; ++b) {
+      const Vec2 p = sa.free_components[b].sample;
+      const int c = sc.locate(p), a = sb.locate(p);
+      if (c >= 0) local.unite(B0 + b, C0 + c);
+      if (c >= 0 && a >= 0) local.unite(B0 + b, a);
+    }
+    for (int c = 0; c < component_count(sc); ++c) {
+      const Vec2 p = sc.free_components[c].sample;
+      const int a = sb.locate(p), b = sa.locate(p);
+      if (a >= 0) local.unite(C0 + c, a);
+      if (b >= 0) local.unite(C0 + c, B0 + b);
+    }
   }
 
   int cell_of(const Link& link, int component) const {
@@ -513,9 +547,10 @@ class TopologyBuilder {
 
   const Pair& pair_;
   const SlicedSpace& space_;
-  int threads_;
+  TopologyOptions options_;
   std::vector<double> criticals_, starts_, ends_, side_angles_;
   std::vector<char> has_side_;            // 2k: an extra slice before critical k; 2k + 1: after it
+  std::vector<char> by_count_;            // per critical: joined by joins_follow_from_counts
   std::vector<std::vector<int>> stored_;  // per interval: its non-critical slices, by theta
   std::vector<int> critical_slice_, representative_;
   std::vector<Slice> sides_;  // 2k: before critical k, 2k + 1: after it
@@ -558,8 +593,9 @@ double side_slice_angle(const Tolerances& tol) {
   return std::sqrt(kSideSliceAngleSquaredPerAngular * tol.angular);
 }
 
-SpaceTopology compute_topology(const Pair& pair, const SlicedSpace& space, int threads) {
-  return TopologyBuilder(pair, space, threads).build();
+SpaceTopology compute_topology(const Pair& pair, const SlicedSpace& space,
+                               const TopologyOptions& options) {
+  return TopologyBuilder(pair, space, options).build();
 }
 
 std::vector<SegmentLabel> boundary_labels(const Slice& s, const FreeComponent& c) {
