@@ -272,13 +272,15 @@ nlohmann::json topology_without_checks(const Pair& pair, const SlicedSpace& spac
 // where the full rules leave a sliver of a critical slice (thinner than the contact
 // tolerance) an orphan, which the counts join.
 TEST(SpaceTopology, JoinsFromComponentCountsAgreeWithTheSampleRules) {
-  int compared = 0, by_count = 0, orphans = 0;
+  int compared = 0, by_count = 0, by_clearance = 0, orphans = 0;
   const auto compare = [&](const Pair& pair, const std::string& name) {
     SlicedSpace space = space_of(pair);
     const nlohmann::json counted = topology_without_checks(pair, space);
     by_count += space.topology.checks.joins_by_count;
+    by_clearance += space.topology.checks.joins_by_clearance;
     space.topology = compute_topology(pair, space, {2, true});
     EXPECT_EQ(space.topology.checks.joins_by_count, 0) << name;
+    EXPECT_EQ(space.topology.checks.joins_by_clearance, 0) << name;
     EXPECT_EQ(space.topology.checks.side_slices_not_equivalent, 0) << name;
     if (space.topology.checks.orphan_critical_components > 0) {
       orphans += 1;
@@ -292,6 +294,13 @@ TEST(SpaceTopology, JoinsFromComponentCountsAgreeWithTheSampleRules) {
   };
   for (const char* name : {"knee", "cam", "fixture", "fastener"})
     compare(testkit::load_example(name), name);
+  // The fastener's slot component is thinner than reach times the gap to the nearest stored
+  // slice at most of its 36 critical orientations: the clearance proves only a few.
+  const Pair fastener = testkit::load_example("fastener");
+  const TopologyChecks& f = space_of(fastener).topology.checks;
+  EXPECT_EQ(f.joins_by_count, 2);
+  EXPECT_GE(f.joins_by_clearance, 1);
+  EXPECT_LE(f.joins_by_clearance, 10);
   std::mt19937 rng(4711);
   for (int i = 0; i < 24; ++i) {
     const testkit::RandomPair rp = testkit::random_pair(rng, 4 + i % 4, 5 + i % 5, i % 2 == 0);
@@ -301,8 +310,8 @@ TEST(SpaceTopology, JoinsFromComponentCountsAgreeWithTheSampleRules) {
   EXPECT_GE(compared, 24);
   EXPECT_GT(by_count, 100);
   RecordProperty("compared", compared);
-  std::printf("compared %d pairs, %d joins by count, %d pairs left out for orphans\n", compared,
-              by_count, orphans);
+  std::printf("compared %d pairs, %d joins by count, %d by clearance, %d left out for orphans\n",
+              compared, by_count, by_clearance, orphans);
 }
 
 // ---- Random curved pairs ----------------------------------------------------------------

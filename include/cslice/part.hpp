@@ -70,4 +70,8 @@ Part placed(const Part& part, const Pose& pose);
 
 const Curve& edge_of(const Part& part, const Feature& f);
 
+// A part's reach: the largest distance of a point of it from its body origin. Turning the
+// moving part by dtheta moves none of its points further than reach * |dtheta|.
+double moving_reach(const Part& moving);
+
 }  // namespace cslice

@@ -72,9 +72,6 @@ struct PathResult {
   PathStats stats;
 };
 
-// The moving part's reach: the largest distance of a point of it from its body origin.
-double moving_reach(const Part& moving);
-
 // The bound s above on how far any point of the moving part moves on the straight motion
 // from a to b (theta the short way round).
 double step_sweep(double reach, const Pose& a, const Pose& b);

@@ -161,4 +161,11 @@ void finish_part(Part& part) {
   build_features(part, make_tolerances(size > 0.0 ? size : 1.0).angular);
 }
 
+double moving_reach(const Part& moving) {
+  double r = 0.0;
+  for (const Loop& loop : moving.loops)
+    for (const Curve& c : loop.edges) r = std::max(r, farthest_distance(c, {0.0, 0.0}));
+  return r;
+}
+
 }  // namespace cslice

@@ -19,13 +19,6 @@
 
 namespace cslice {
 
-double moving_reach(const Part& moving) {
-  double r = 0.0;
-  for (const Loop& loop : moving.loops)
-    for (const Curve& c : loop.edges) r = std::max(r, farthest_distance(c, {0.0, 0.0}));
-  return r;
-}
-
 double step_sweep(double reach, const Pose& a, const Pose& b) {
   const double turn = std::fabs(wrap_angle(b.theta - a.theta));
   return std::hypot(b.x - a.x, b.y - a.y) + reach * turn;

@@ -124,6 +124,8 @@ class TopologyBuilder {
     side_angles_.assign(2 * n, 0.0);
     has_side_.assign(2 * n, 0);
     by_count_.assign(n, 0);
+    certified_.assign(n, 0);
+    certified_unions_.assign(n, {});
     for (int k = 0; k < n; ++k) {
       const int before = (k + n - 1) % n;
       const double gap_before =
@@ -132,8 +134,11 @@ class TopologyBuilder {
       side_angles_[2 * k] = std::min(gap_before, delta);
       side_angles_[2 * k + 1] = std::min(gap_after, delta);
       by_count_[k] = !options_.verify_joins && joins_follow_from_counts(before, k);
-      has_side_[2 * k] = gap_before > delta && !by_count_[k];
-      has_side_[2 * k + 1] = gap_after > delta && !by_count_[k];
+      const bool need_sides = (gap_before > delta || gap_after > delta) && !by_count_[k];
+      certified_[k] = need_sides && !options_.verify_joins &&
+                      certify_joins(k, gap_before, gap_after, certified_unions_[k]);
+      has_side_[2 * k] = gap_before > delta && !by_count_[k] && !certified_[k];
+      has_side_[2 * k + 1] = gap_after > delta && !by_count_[k] && !certified_[k];
       thetas[2 * k] = wrap_angle(criticals_[k] - delta);
       thetas[2 * k + 1] = wrap_angle(criticals_[k] + delta);
     }
@@ -142,6 +147,65 @@ class TopologyBuilder {
                                     [&](size_t i, Slicer& s) {
                                       if (has_side_[i]) sides_[i] = s.slice(thetas[i]);
                                     });
+  }
+
+  // The sample rules of `transition` applied to the interval's nearest stored slices instead
+  // of side slices, where each sample's clearance proves the vertical segment it stands for
+  // free. Turning the moving part by dtheta moves none of its points further than
+  // reach * |dtheta| (moving_reach), so a configuration (p, theta) whose distance d from
+  // blocked space exceeds reach * |theta' - theta| stays free up to theta'. A sample of a free
+  // component lies at least its distance to the component's boundary from blocked space. So
+  // a sample is carried to theta_k (and across it) only when that clearance, less the
+  // geometric epsilon, exceeds reach times the turn; where one is not, or a carried sample is
+  // not found in a component where it must be free, false: the side slices decide.
+  bool certify_joins(int k, double gap_before, double gap_after,
+                     std::vector<std::pair<int, int>>& unions) const {
+    const int n = static_cast<int>(criticals_.size());
+    const Slice& sb = space_.slices[stored_[(k + n - 1) % n].back()].slice;
+    const Slice& sa = space_.slices[stored_[k].front()].slice;
+    const Slice& sc = space_.slices[critical_slice_[k]].slice;
+    const int nb = component_count(sb), na = component_count(sa);
+    const int B0 = nb, C0 = nb + na;
+    const auto free_over = [&](const Slice& s, int c, double turn) {
+      return sample_clearance(s, c) - s.epsilon > reach_ * turn;
+    };
+    // A sample of one side slice: to theta_k, and on to the other side when it clears both.
+    const auto carry = [&](const Slice& from, int c, int id, double gap, const Slice& other,
+                           int other0, double other_gap) {
+      if (!free_over(from, c, gap)) return false;
+      const Vec2 p = from.free_components[c].sample;
+      const int at_k = sc.locate(p);
+      if (at_k < 0) return false;
+      unions.emplace_back(id, C0 + at_k);
+      if (!free_over(from, c, gap + other_gap)) return true;
+      const int there = other.locate(p);
+      if (there < 0) return false;
+      unions.emplace_back(id, other0 + there);
+      return true;
+    };
+    for (int a = 0; a < nb; ++a)
+      if (!carry(sb, a, a, gap_before, sa, B0, gap_after)) return false;
+    for (int b = 0; b < na; ++b)
+      if (!carry(sa, b, B0 + b, gap_after, sb, 0, gap_before)) return false;
+    for (int c = 0; c < component_count(sc); ++c) {
+      if (!free_over(sc, c, std::max(gap_before, gap_after))) return false;
+      const Vec2 p = sc.free_components[c].sample;
+      const int a = sb.locate(p), b = sa.locate(p);
+      if (a < 0 || b < 0) return false;
+      unions.emplace_back(C0 + c, a);
+      unions.emplace_back(C0 + c, B0 + b);
+    }
+    return true;
+  }
+
+  // How far a component's sample lies from its boundary; infinite with no boundary.
+  static double sample_clearance(const Slice& s, int component) {
+    const FreeComponent& c = s.free_components[component];
+    double d = std::numeric_limits<double>::infinity();
+    for (const auto& cycle : c.boundary)
+      for (const ContactPiece& piece : cycle)
+        d = std::min(d, distance_to_curve(piece.curve, c.sample));
+    return d;
   }
 
   // With at most one free component in the slices of the interval before critical
@@ -175,6 +239,8 @@ class TopologyBuilder {
     }
     topo_.checks.joins_by_count =
         static_cast<int>(std::count(by_count_.begin(), by_count_.end(), char{1}));
+    topo_.checks.joins_by_clearance =
+        static_cast<int>(std::count(certified_.begin(), certified_.end(), char{1}));
     nodes_ = UnionFind(nodes);
     refined_links_.assign(n, {});
     for (int i = 0; i < n; ++i) {
@@ -376,6 +442,8 @@ class TopologyBuilder {
       // At most one component on each side (joins_follow_from_counts).
       for (int x = 1; x < nb + na + nc; ++x)
         if (nc > 0) local.unite(0, x);
+    } else if (certified_[k]) {
+      for (const auto& [x, y] : certified_unions_[k]) local.unite(x, y);
     } else {
       join_by_samples(sb, sa, sc, local);
     }
@@ -549,8 +617,11 @@ class TopologyBuilder {
   const SlicedSpace& space_;
   TopologyOptions options_;
   std::vector<double> criticals_, starts_, ends_, side_angles_;
-  std::vector<char> has_side_;            // 2k: an extra slice before critical k; 2k + 1: after it
-  std::vector<char> by_count_;            // per critical: joined by joins_follow_from_counts
+  std::vector<char> has_side_;   // 2k: an extra slice before critical k; 2k + 1: after it
+  std::vector<char> by_count_;   // per critical: joined by joins_follow_from_counts
+  std::vector<char> certified_;  // per critical: joined by certify_joins, with
+  std::vector<std::vector<std::pair<int, int>>> certified_unions_;  // these unions
+  double reach_ = moving_reach(pair_.moving);
   std::vector<std::vector<int>> stored_;  // per interval: its non-critical slices, by theta
   std::vector<int> critical_slice_, representative_;
   std::vector<Slice> sides_;  // 2k: before critical k, 2k + 1: after it
