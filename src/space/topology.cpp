@@ -13,6 +13,7 @@
 #include <deque>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 #include "cslice/equivalence.hpp"
 #include "cslice/space.hpp"
@@ -342,7 +343,8 @@ class TopologyBuilder {
   Link refine(int interval, const Link& a, const Link& b) {
     const double theta =
         wrap_angle(a.slice->theta + offset_from(a.slice->theta, b.slice->theta) / 2);
-    refined_.push_back(compute_slice(pair_, theta));
+    if (!refiner_) refiner_.emplace(pair_);
+    refined_.push_back(refiner_->slice(theta));
     topo_.checks.refinement_slices += 1;
     const Link link{&refined_.back(), -1, static_cast<int>(nodes_.parent.size())};
     for (int c = 0; c < component_count(refined_.back()); ++c)
@@ -626,7 +628,8 @@ class TopologyBuilder {
   std::vector<int> critical_slice_, representative_;
   std::vector<Slice> sides_;  // 2k: before critical k, 2k + 1: after it
   std::vector<std::vector<Link>> chains_;
-  std::deque<Slice> refined_;  // extra slices halving unmatched gaps (stable addresses)
+  std::deque<Slice> refined_;      // extra slices halving unmatched gaps (stable addresses)
+  std::optional<Slicer> refiner_;  // computes them, built on first use
   std::vector<std::vector<Link>> refined_links_;  // per interval
   UnionFind nodes_{0};
   std::vector<int> node_cell_;
