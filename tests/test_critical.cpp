@@ -2,6 +2,7 @@
 // sets, invariance under rotating either part, and the `cslice critical` command.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <nlohmann/json.hpp>
 #include <random>
 
@@ -79,6 +80,37 @@ TEST(Trig, ProductsAndDerivativesAgreeWithPointwiseValues) {
       const double step = 1e-6;
       EXPECT_NEAR(df(theta), (f(theta + step) - f(theta - step)) / (2 * step), 1e-7);
     }
+  }
+}
+
+// The arithmetic runs only up to each operand's `top`; with the default top (kMaxDegree) it
+// runs over every harmonic. Both must give the same bits up to the degree, where any root
+// finding reads them.
+TEST(Trig, ArithmeticUpToTopKeepsEveryBit) {
+  std::mt19937 rng(23);
+  std::uniform_int_distribution<int> pick(0, 4);
+  auto bits_equal = [](const Trig& x, const Trig& y) {
+    if (x.degree() != y.degree()) return false;
+    for (int j = 0; j <= x.degree(); ++j)
+      if (std::memcmp(&x.a[j], &y.a[j], sizeof(double)) != 0 ||
+          std::memcmp(&x.b[j], &y.b[j], sizeof(double)) != 0)
+        return false;
+    return true;
+  };
+  for (int trial = 0; trial < 2000; ++trial) {
+    Trig f = random_trig(rng, pick(rng)), g = random_trig(rng, pick(rng));
+    if (trial % 3 == 0) f.a[0] = -0.0;  // signed zeros must survive too
+    if (trial % 5 == 0) g.b[1] = 0.0;
+    Trig tf = f, tg = g;  // the same values, with tight tops
+    tf.top = f.degree();
+    tg.top = g.degree();
+    EXPECT_TRUE(bits_equal(tf * tg, f * g)) << "trial " << trial;
+    EXPECT_TRUE(bits_equal(tf + tg, f + g)) << "trial " << trial;
+    EXPECT_TRUE(bits_equal(tf - tg, f - g)) << "trial " << trial;
+    EXPECT_TRUE(bits_equal(0.3 * tf, 0.3 * f)) << "trial " << trial;
+    EXPECT_TRUE(bits_equal(tf.derivative(), f.derivative())) << "trial " << trial;
+    EXPECT_TRUE(bits_equal(tf.half_turned(), f.half_turned())) << "trial " << trial;
+    EXPECT_LE((tf * tg).top, tf.top + tg.top);
   }
 }
 

@@ -96,12 +96,17 @@ bool PlacementTester::piece_inside_other(const Curve& edge, std::vector<double>&
   return false;
 }
 
+// The answer is an "or" of independent tests, so it is settled by the first that holds. A
+// moving edge's splits come only from its own meetings with the fixed edges, so its pieces
+// are tested as soon as those are known: a blocked placement usually stops at the first
+// edge that pokes into the fixed part, before the others are intersected. The fixed edges'
+// splits need every moving edge, so their pieces come last.
 bool PlacementTester::interiors_overlap() {
   const double eps = pair_.tol.geometric;
   for (auto& s : moving_splits_) s.clear();
   for (auto& s : fixed_splits_) s.clear();
-  bool same_side = false;
-  for (size_t i = 0; i < moving_edges_.size() && !same_side; ++i) {
+  for (size_t i = 0; i < moving_edges_.size(); ++i) {
+    bool same_side = false;
     indexes_->fixed.for_each_meeting(moving_boxes_[i].inflated(eps), [&](int j) {
       const Intersection x = intersect(moving_edges_[i], fixed_edges_[j], eps);
       if (x.kind == IntersectionKind::overlapping && x.same_direction) same_side = true;
@@ -110,10 +115,8 @@ bool PlacementTester::interiors_overlap() {
         fixed_splits_[j].insert(fixed_splits_[j].end(), {x.hits[h].tb0, x.hits[h].tb1});
       }
     });
+    if (same_side || piece_inside_other(moving_edges_[i], moving_splits_[i], true)) return true;
   }
-  if (same_side) return true;
-  for (size_t i = 0; i < moving_edges_.size(); ++i)
-    if (piece_inside_other(moving_edges_[i], moving_splits_[i], true)) return true;
   // A fixed edge away from the (bounded) moving part has no piece inside it.
   bool inside = false;
   indexes_->fixed.for_each_meeting(moving_box_.inflated(eps), [&](int j) {

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "criticals/candidates.hpp"
 #include "criticals/events.hpp"
@@ -139,26 +140,34 @@ class Worker {
   // changes the slice along a whole piece of contact segment, not only at its point.
   // The probes' cache lasts for one bin's candidates, which one worker takes in a fixed
   // order, so that the answers do not depend on the thread count.
-  void start_bin() { cache_.clear(); }
-  bool reaches_free(const Candidate& c, const std::vector<BinEntry>& bin) {
-    if (c.condition == CriticalCondition::segment_end) return segment_end_reaches_free(c, bin);
-    return overlap_reaches_free(c, bin);
+  // The bin's entries are built only when a piece needs cutting: most candidates are
+  // settled by their cheap probes, or have no overlapping segments.
+  void start_bin(int bin) {
+    cache_.clear();
+    bin_ = bin;
+    entries_.reset();
+  }
+  bool reaches_free(const Candidate& c) {
+    if (c.condition == CriticalCondition::segment_end) return segment_end_reaches_free(c);
+    return overlap_reaches_free(c);
   }
 
  private:
-  std::vector<double> roots(const EventEquation& eq, const MeetingTask& task) {
+  // The roots near the task's bins, in a buffer reused by the next call (validating a root
+  // solves nothing, so a caller's loop over them is never disturbed).
+  const std::vector<double>& roots(const EventEquation& eq, const MeetingTask& task) {
     ++stats.equations;
     const TrigRoots r = trig_roots(eq.f, kRelativeGeometricEpsilon * eq.magnitude,
                                    kRelativeGeometricEpsilon, ctx_.pair.tol.angular);
     stats.roots += long(r.roots.size());
-    std::vector<double> near;
+    near_.clear();
     for (double theta : r.roots) {
       if (task.near(ctx_.binning, theta, ctx_.pair.tol.critical_angle))
-        near.push_back(theta);
+        near_.push_back(theta);
       else
         ++stats.culled;
     }
-    return near;
+    return near_;
   }
 
   // ---- Validation: the configuration lies on the contact segments --------------------
@@ -247,25 +256,35 @@ class Worker {
                        [&](Vec2 p) { return !blocked_cached(p, theta); });
   }
 
-  bool overlap_reaches_free(const Candidate& c, const std::vector<BinEntry>& bin) {
+  const std::vector<BinEntry>& bin_entries() {
+    if (!entries_) entries_ = ctx_.entries(bin_);
+    return *entries_;
+  }
+
+  bool overlap_reaches_free(const Candidate& c) {
     if (c.count != 2) return false;
     std::vector<ContactSegment> a, b;
     segments_of(c.families[0], c.theta, a);
     segments_of(c.families[1], c.theta, b);
+    // Piece by piece, stopping at the first free probe: the probes tested, and so the cache,
+    // are those of testing them all in this order up to that one.
     std::vector<Vec2> probes;
     for (const ContactSegment& sa : a)
       for (const ContactSegment& sb : b)
         if (intersect(sa.curve, sb.curve, ctx_.pair.tol.geometric).kind ==
-            IntersectionKind::overlapping)
-          add_piece_probes(c.families[0], sa.curve, c.theta, bin, probes);
-    return any_free(probes, c.theta);
+            IntersectionKind::overlapping) {
+          probes.clear();
+          add_piece_probes(c.families[0], sa.curve, c.theta, probes);
+          if (any_free(probes, c.theta)) return true;
+        }
+    return false;
   }
 
   // A contact segment appearing, vanishing or switching ends matters only if some of it is
   // outside blocked space. Other contact segments cut it into pieces each wholly blocked or
   // not, so its ends and the pieces' midpoints decide (a piece free at a single crossing
   // point only would be a degenerate contact, which the crossing's own criticalities see).
-  bool segment_end_reaches_free(const Candidate& c, const std::vector<BinEntry>& bin) {
+  bool segment_end_reaches_free(const Candidate& c) {
     const int family = c.families[0];
     std::vector<ContactSegment> own;
     segments_of(family, c.theta, own);
@@ -275,17 +294,19 @@ class Worker {
     for (const MovingPoint& e : ctx_.families[family].ends) probes.push_back(e.at(c.theta));
     for (const ContactSegment& s : own) probes.push_back(point_at(s.curve, 0.5));
     if (any_free(probes, c.theta)) return true;
-    probes.clear();
-    for (const ContactSegment& s : own) add_piece_probes(family, s.curve, c.theta, bin, probes);
-    return any_free(probes, c.theta);
+    for (const ContactSegment& s : own) {
+      probes.clear();
+      add_piece_probes(family, s.curve, c.theta, probes);
+      if (any_free(probes, c.theta)) return true;
+    }
+    return false;
   }
 
-  void add_piece_probes(int family, const Curve& curve, double theta,
-                        const std::vector<BinEntry>& bin, std::vector<Vec2>& probes) {
+  void add_piece_probes(int family, const Curve& curve, double theta, std::vector<Vec2>& probes) {
     std::vector<double> cuts = {0.0, 1.0};
     const Box box = bounding_box(curve).inflated(ctx_.pair.tol.criticality);
     std::vector<ContactSegment> others;
-    for (const BinEntry& n : bin) {
+    for (const BinEntry& n : bin_entries()) {
       if (n.family == family || !n.box.overlaps(box)) continue;
       for (const ContactSegment& s : segments_of(n.family, theta, others)) {
         const Intersection hit = intersect(curve, s.curve, ctx_.pair.tol.geometric);
@@ -303,7 +324,10 @@ class Worker {
   const Context& ctx_;
   PlacementTester tester_;
   std::vector<ContactSegment> scratch_;
+  std::vector<double> near_;  // roots()
   std::map<std::array<long long, 3>, bool> cache_;
+  int bin_ = 0;
+  std::optional<std::vector<BinEntry>> entries_;  // of bin_, when built
 };
 
 class CriticalFinder {
@@ -427,9 +451,8 @@ class CriticalFinder {
     tbb::parallel_for(0, ctx_.binning.count, [&](int b) {
       if (probe[b].empty()) return;
       Worker& w = *workers_.local();
-      const std::vector<BinEntry> bin = ctx_.entries(b);
-      w.start_bin();
-      for (size_t i : probe[b]) keep[i] = w.reaches_free(found[i], bin);
+      w.start_bin(b);
+      for (size_t i : probe[b]) keep[i] = w.reaches_free(found[i]);
     });
     return keep;
   }

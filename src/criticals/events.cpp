@@ -30,8 +30,10 @@ EventEquation endpoint_equation(const MovingPoint& end, const FamilyEquation& b)
     const Trig dd = dot(d, d), rr = Trig::constant(b.radius * b.radius);
     return {dd - rr, norm_sum({&dd, &rr})};
   }
-  const Trig along = dot(b.normal, x), offset = dot(b.normal, b.point);
-  return {along - offset, norm_sum({&along, &offset})};
+  // n . (x - p) as n . x - n . p, where -n . p is the line's own b (family_equation), the
+  // same bits as recomputing it: negation is exact, and x - y is x + (-y).
+  const Trig along = dot(b.normal, x);
+  return {along + b.b, norm_sum({&along, &b.b})};
 }
 
 int tangent_equations(const FamilyEquation& a, const FamilyEquation& b,
@@ -107,16 +109,17 @@ std::optional<Vec2> triple_point(const FamilyEquation& a, const FamilyEquation& 
   struct Row {
     double ax, ay, b;
   };
-  std::vector<Row> rows;
+  std::array<Row, 3> rows;  // 2 with a circle, else 3: no allocation per root
+  int count = 0;
   for (auto* x : e) {
     if (x == g) continue;
     const Linear l = g ? minus_circle(*x, *g) : Linear{x->a.x, x->a.y, x->b};
-    rows.push_back({l.ax(theta), l.ay(theta), l.b(theta)});
+    rows[count++] = {l.ax(theta), l.ay(theta), l.b(theta)};
   }
   std::optional<Vec2> best;
   double best_det = 0.0;
-  for (size_t i = 0; i < rows.size(); ++i)
-    for (size_t j = i + 1; j < rows.size(); ++j) {
+  for (int i = 0; i < count; ++i)
+    for (int j = i + 1; j < count; ++j) {
       const Row& r = rows[i];
       const Row& s = rows[j];
       const double det = r.ax * s.ay - r.ay * s.ax;

@@ -9,6 +9,7 @@ namespace cslice {
 Trig Trig::constant(double v) {
   Trig t;
   t.a[0] = v;
+  t.top = 0;
   return t;
 }
 
@@ -16,11 +17,12 @@ Trig Trig::harmonic(double c, double s) {
   Trig t;
   t.a[1] = c;
   t.b[1] = s;
+  t.top = 1;
   return t;
 }
 
 int Trig::degree() const {
-  for (int j = kMaxDegree; j > 0; --j)
+  for (int j = top; j > 0; --j)
     if (a[j] != 0.0 || b[j] != 0.0) return j;
   return 0;
 }
@@ -47,7 +49,8 @@ double Trig::operator()(double theta) const {
 
 Trig Trig::derivative() const {
   Trig d;
-  for (int j = 1; j <= kMaxDegree; ++j) {
+  d.top = top;
+  for (int j = 1; j <= top; ++j) {
     d.a[j] = j * b[j];
     d.b[j] = -j * a[j];
   }
@@ -56,16 +59,19 @@ Trig Trig::derivative() const {
 
 Trig Trig::half_turned() const {
   Trig t = *this;
-  for (int j = 1; j <= kMaxDegree; j += 2) {
+  for (int j = 1; j <= top; j += 2) {
     t.a[j] = -t.a[j];
     t.b[j] = -t.b[j];
   }
   return t;
 }
 
+// Harmonics above both tops are zero in the result too; only their sign could differ from a
+// full pass (-0 + -0), and nothing reads a zero above the degree but for its magnitude.
 Trig operator+(const Trig& f, const Trig& g) {
   Trig r;
-  for (int j = 0; j <= Trig::kMaxDegree; ++j) {
+  r.top = std::max(f.top, g.top);
+  for (int j = 0; j <= r.top; ++j) {
     r.a[j] = f.a[j] + g.a[j];
     r.b[j] = f.b[j] + g.b[j];
   }
@@ -76,13 +82,21 @@ Trig operator-(const Trig& f) {
   return -1.0 * f;
 }
 
+// f + (-g), in one pass: x - y and x + (-y) are the same IEEE operation.
 Trig operator-(const Trig& f, const Trig& g) {
-  return f + (-g);
+  Trig r;
+  r.top = std::max(f.top, g.top);
+  for (int j = 0; j <= r.top; ++j) {
+    r.a[j] = f.a[j] - g.a[j];
+    r.b[j] = f.b[j] - g.b[j];
+  }
+  return r;
 }
 
 Trig operator*(double s, const Trig& f) {
   Trig r;
-  for (int j = 0; j <= Trig::kMaxDegree; ++j) {
+  r.top = f.top;
+  for (int j = 0; j <= r.top; ++j) {
     r.a[j] = s * f.a[j];
     r.b[j] = s * f.b[j];
   }
@@ -91,30 +105,52 @@ Trig operator*(double s, const Trig& f) {
 
 // Product to sum, with complex harmonics: f = sum_j Re(F_j e^{ij.theta}) where
 // F_0 = a0 and F_j = a_j - i b_j, and Re(u) Re(v) = (Re(u v) + Re(u conj(v))) / 2.
+// Written out in real arithmetic, operation for operation as std::complex computes it
+// (x y = (x.re y.re - x.im y.im, x.re y.im + x.im y.re)) so the coefficients keep every bit,
+// without its overflow checks and with the accumulators only as long as the result.
+namespace {
+struct Complex {
+  double re = 0.0, im = 0.0;
+};
+Complex times(Complex x, Complex y) {
+  return {x.re * y.re - x.im * y.im, x.re * y.im + x.im * y.re};
+}
+Complex half(Complex x) {
+  return {0.5 * x.re, 0.5 * x.im};
+}
+Complex conjugate(Complex x) {
+  return {x.re, -x.im};
+}
+void accumulate(Complex& acc, Complex x) {
+  acc.re += x.re;
+  acc.im += x.im;
+}
+}  // namespace
+
 Trig operator*(const Trig& f, const Trig& g) {
   const int nf = f.degree(), ng = g.degree();
   assert(nf + ng <= Trig::kMaxDegree);
-  using C = std::complex<double>;
-  std::array<C, Trig::kMaxDegree + 1> acc{};
+  std::array<Complex, Trig::kMaxDegree + 1> acc{};
   for (int j = 0; j <= nf; ++j) {
-    const C u(f.a[j], -f.b[j]);
+    const Complex u{f.a[j], -f.b[j]}, half_u = half(u);
     for (int k = 0; k <= ng; ++k) {
-      const C v(g.a[k], -g.b[k]);
-      acc[j + k] += 0.5 * u * v;
+      const Complex v{g.a[k], -g.b[k]};
+      accumulate(acc[j + k], times(half_u, v));
       const int d = j - k;
       // Re(u e^{ij} conj(v e^{ik})) = Re(u conj(v) e^{i(j-k)}); a negative frequency is the
       // conjugate at the positive one.
       if (d >= 0)
-        acc[d] += 0.5 * u * std::conj(v);
+        accumulate(acc[d], times(half_u, conjugate(v)));
       else
-        acc[-d] += 0.5 * std::conj(u * std::conj(v));
+        accumulate(acc[-d], half(conjugate(times(u, conjugate(v)))));
     }
   }
   Trig r;
-  r.a[0] = acc[0].real();  // a zero frequency has no sine part
-  for (int j = 1; j <= Trig::kMaxDegree; ++j) {
-    r.a[j] = acc[j].real();
-    r.b[j] = -acc[j].imag();
+  r.top = nf + ng;
+  r.a[0] = acc[0].re;  // a zero frequency has no sine part
+  for (int j = 1; j <= r.top; ++j) {
+    r.a[j] = acc[j].re;
+    r.b[j] = -acc[j].im;
   }
   return r;
 }

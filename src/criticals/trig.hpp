@@ -22,6 +22,11 @@ struct Trig {
   static constexpr int kMaxDegree = 8;
   std::array<double, kMaxDegree + 1> a{};  // cosine coefficients (a[0] is the constant)
   std::array<double, kMaxDegree + 1> b{};  // sine coefficients (b[0] unused, always 0)
+  // Every coefficient above `top` is zero: the arithmetic below touches only harmonics up to
+  // it (most equations are built from degree-1 terms, and a full pass over kMaxDegree
+  // harmonics per operation was most of their cost). Setting coefficients by hand keeps the
+  // default, which promises nothing.
+  int top = kMaxDegree;
 
   static Trig constant(double v);
   // c cos(theta) + s sin(theta)
