@@ -4,6 +4,8 @@
 // convolution; cost growing no faster than k log k in the number k of contact segments.
 //
 //   BM_SliceExample/<name>/<i>  the paper's examples at theta[i]
+//   BM_SlicerExample/<name>     one more slice of an example by a Slicer already slicing it
+//                               (as the sliced space does), cycling through 64 orientations
 //   BM_SliceStar/<n>            smooth random star polygons, n vertices per part
 //   BM_CgalStar/<n>             CGAL::minkowski_sum_by_reduced_convolution_2 (exact
 //                               kernel) of the same pairs: fixed + moving turned and reflected
@@ -114,6 +116,22 @@ void BM_SliceExample(benchmark::State& state, const std::string& name) {
   run_slice(state, pair, theta);
 }
 
+// One Slicer for all iterations, as the sliced space uses one per thread: the features'
+// contact data, the placement tester and the slices' working buffers are kept, so this is
+// the cost of one more slice, averaged over orientations all around.
+void BM_SlicerExample(benchmark::State& state, const std::string& name) {
+  const cslice::Pair pair = load_example(name);
+  cslice::Slicer slicer(pair);
+  constexpr int kThetas = 64;
+  int k = 0;
+  for (auto _ : state) {
+    const double theta = -cslice::kPi + (k++ % kThetas + 0.5) * cslice::kTwoPi / kThetas;
+    const cslice::Slice slice = slicer.slice(theta);
+    benchmark::DoNotOptimize(slice.blocked_area);
+  }
+  state.counters["features"] = features(pair);
+}
+
 void BM_SliceStar(benchmark::State& state) {
   run_slice(state, star_pair(Shape::smooth, int(state.range(0))).pair, kStarTheta);
 }
@@ -160,6 +178,13 @@ CSLICE_EXAMPLE(knee);
 CSLICE_EXAMPLE(cam);
 CSLICE_EXAMPLE(fixture);
 CSLICE_EXAMPLE(fastener);
+
+#define CSLICE_SLICER_EXAMPLE(name) \
+  BENCHMARK_CAPTURE(BM_SlicerExample, name, std::string(#name))->Unit(benchmark::kMicrosecond)
+CSLICE_SLICER_EXAMPLE(knee);
+CSLICE_SLICER_EXAMPLE(cam);
+CSLICE_SLICER_EXAMPLE(fixture);
+CSLICE_SLICER_EXAMPLE(fastener);
 
 BENCHMARK(BM_SliceStar)
     ->Arg(100)

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include "cslice/classify.hpp"
 #include "cslice/slice.hpp"
+#include "cslice/slice_io.hpp"
 #include "support/examples.hpp"
 #include "support/random_parts.hpp"
 #include "support/random_polygons.hpp"
@@ -357,5 +358,26 @@ TEST(SliceOracle, CurvedStarsWithTinyReflexTurnsKeepTheirFreeSpace) {
     std::mt19937 points(seed);
     EXPECT_GT(check_against_classify(*r.pair, 0.7, 100, points, what, seed == 2026u), 30) << what;
     if (HasFailure()) return;
+  }
+}
+
+// A Slicer keeps its working buffers from one slice to the next; no slice may depend on the
+// ones before it. Slices of different sizes in turn (a pair's orientations, then another
+// pair's) must each match a fresh compute_slice, field for field.
+TEST(SliceReuse, OneSlicerGivesTheSlicesOfFreshOnes) {
+  std::vector<Pair> pairs;
+  for (const char* name : {"knee", "fixture", "cam"}) pairs.push_back(load_example(name));
+  std::mt19937 rng(7);
+  for (int i = 0; i < 4; ++i)
+    pairs.push_back(testkit::random_pair(rng, 5 + i, 8 + 2 * i, i % 2 == 0).pair);
+  std::uniform_real_distribution<double> angle(-kPi, kPi);
+  for (const Pair& pair : pairs) {
+    Slicer slicer(pair);
+    for (int k = 0; k < 12; ++k) {
+      const double theta = k == 0 ? 0.0 : angle(rng);
+      EXPECT_EQ(slice_to_json(pair, slicer.slice(theta)),
+                slice_to_json(pair, compute_slice(pair, theta)))
+          << "theta " << theta;
+    }
   }
 }

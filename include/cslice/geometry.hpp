@@ -4,6 +4,7 @@
 // (from Tolerances), never a literal.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -98,8 +99,15 @@ struct Box {
   Vec2 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   Vec2 hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
   bool empty() const { return lo.x > hi.x || lo.y > hi.y; }
-  void add(Vec2 p);
-  void add(const Box& b);
+  void add(Vec2 p) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  }
+  void add(const Box& b) {
+    if (b.empty()) return;
+    add(b.lo);
+    add(b.hi);
+  }
   Box inflated(double margin) const;
   bool overlaps(const Box& b) const;
   double diagonal() const { return empty() ? 0.0 : distance(lo, hi); }
@@ -107,6 +115,16 @@ struct Box {
 
 // Wraps an angle into [-pi, pi).
 double wrap_angle(double a);
+
+// std::fmod(a, kTwoPi), bit for bit, without the library call for the angles met in
+// practice: below one turn in magnitude it is a itself, and between one and two turns
+// a -+ kTwoPi is exact (Sterbenz), which is the remainder fmod computes exactly.
+inline double fmod_two_pi(double a) {
+  const double m = std::fabs(a);
+  if (m < kTwoPi) return a;
+  if (m > kTwoPi && m < 2.0 * kTwoPi) return a > 0.0 ? a - kTwoPi : a + kTwoPi;
+  return std::fmod(a, kTwoPi);  // exactly one or two turns (a signed zero), more, or NaN
+}
 
 // A boundary edge, directed from `from` to `to`: a line segment (bulge 0) or a circular arc
 // (bulge = tan(sweep / 4), positive counterclockwise). A full circle has from == to and
@@ -153,6 +171,14 @@ double signed_area_contribution(const Curve& c);
 double arc_parameter_of_angle(const Curve& arc, double a);
 // Parameter of the point of the curve nearest to p (clamped to [0, 1]).
 double closest_parameter(const Curve& c, Vec2 p);
+
+// closest_parameter(c, p) and distance_to_curve(c, p) together, the same values, from one
+// angle instead of two for an arc.
+struct NearestPoint {
+  double t = 0.0;
+  double distance = 0.0;
+};
+NearestPoint nearest_point(const Curve& c, Vec2 p);
 
 // ---- Intersections --------------------------------------------------------------------
 // One routine per pair of curve kinds; `intersect` picks the right one. All take eps (a

@@ -68,7 +68,7 @@ namespace {
 // Angle intervals are [lo, lo + span] counterclockwise, span in [0, 2pi].
 bool interval_contains(const AngleInterval& a, double angle, double angular_eps) {
   if (a.span >= kTwoPi) return true;
-  double d = std::fmod(angle - a.lo, kTwoPi);
+  double d = fmod_two_pi(angle - a.lo);
   if (d < 0.0) d += kTwoPi;
   return d <= a.span + angular_eps || d >= kTwoPi - angular_eps;
 }
@@ -84,7 +84,7 @@ int intersect_intervals(const AngleInterval& a, const AngleInterval& b, double a
     out[0] = a;
     return 1;
   }
-  double d = std::fmod(b.lo - a.lo, kTwoPi);
+  double d = fmod_two_pi(b.lo - a.lo);
   if (d < 0.0) d += kTwoPi;
   int n = 0;
   for (double shift : {d, d - kTwoPi}) {
@@ -186,37 +186,65 @@ class NormalIndex {
   NormalIndex(const std::vector<ContactFeature>& fixed, double angular_eps)
       : buckets_(std::clamp<size_t>(2 * fixed.size(), 64, 65536)), eps_(angular_eps) {
     width_ = kTwoPi / double(buckets_.size());
-    for (size_t i = 0; i < fixed.size(); ++i)
-      if (fixed[i].can_touch)
-        for_each_bucket(fixed[i].normals, [&](size_t b) { buckets_[b].push_back(int(i)); });
+    ranges_.resize(fixed.size());
+    for (size_t i = 0; i < fixed.size(); ++i) {
+      if (!fixed[i].can_touch) continue;
+      ranges_[i] = range_of(fixed[i].normals);
+      for_each_bucket(ranges_[i], [&](size_t b) { buckets_[b].push_back(int(i)); });
+    }
   }
 
   // Every fixed feature whose bucket range meets the interval, once each, in feature order:
   // the output (segment ids) then follows the features' order, whatever the bucketing.
   void candidates(const AngleInterval& normals, std::vector<int>& out) const {
     out.clear();
+    const Range r = range_of(normals);
+    if (ranges_.size() <= kScanLimit) {
+      // Few features: testing each one's range costs less than gathering and sorting the
+      // buckets' lists, and finds the same features.
+      for (size_t i = 0; i < ranges_.size(); ++i)
+        if (ranges_[i].count > 0 && overlap(r, ranges_[i])) out.push_back(int(i));
+      return;
+    }
     for_each_bucket(
-        normals, [&](size_t b) { out.insert(out.end(), buckets_[b].begin(), buckets_[b].end()); });
+        r, [&](size_t b) { out.insert(out.end(), buckets_[b].begin(), buckets_[b].end()); });
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
   }
 
  private:
-  template <class Fn>
-  void for_each_bucket(const AngleInterval& a, Fn fn) const {
+  static constexpr size_t kScanLimit = 64;
+
+  // Buckets first, first + 1, ..., count of them, modulo the bucket count; none when empty.
+  struct Range {
+    size_t first = 0, count = 0;
+  };
+
+  Range range_of(const AngleInterval& a) const {
     const size_t n = buckets_.size();
-    if (a.span + 2.0 * eps_ >= kTwoPi) {
-      for (size_t b = 0; b < n; ++b) fn(b);
-      return;
-    }
-    double lo = std::fmod(a.lo - eps_, kTwoPi);
+    if (a.span + 2.0 * eps_ >= kTwoPi) return {0, n};
+    double lo = fmod_two_pi(a.lo - eps_);
     if (lo < 0.0) lo += kTwoPi;
     const size_t first = std::min(n - 1, size_t(lo / width_));
     const size_t count = std::min(n, size_t((lo + a.span + 2.0 * eps_) / width_) - first + 1);
-    for (size_t k = 0; k < count; ++k) fn((first + k) % n);
+    return {first, count};
+  }
+
+  // Whether two cyclic ranges share a bucket: then one of them starts inside the other.
+  bool overlap(const Range& a, const Range& b) const {
+    const size_t n = buckets_.size();  // firsts are below n: one wrap at most
+    const size_t b_from_a = b.first >= a.first ? b.first - a.first : b.first + n - a.first;
+    const size_t a_from_b = a.first >= b.first ? a.first - b.first : a.first + n - b.first;
+    return b_from_a < a.count || a_from_b < b.count;
+  }
+
+  template <class Fn>
+  void for_each_bucket(const Range& r, Fn fn) const {
+    for (size_t k = 0; k < r.count; ++k) fn((r.first + k) % buckets_.size());
   }
 
   std::vector<std::vector<int>> buckets_;
+  std::vector<Range> ranges_;  // per fixed feature; empty when it cannot touch
   double width_ = 1.0;
   double eps_;
 };

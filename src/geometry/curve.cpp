@@ -5,17 +5,6 @@
 
 namespace cslice {
 
-void Box::add(Vec2 p) {
-  lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-  hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-}
-
-void Box::add(const Box& b) {
-  if (b.empty()) return;
-  add(b.lo);
-  add(b.hi);
-}
-
 Box Box::inflated(double margin) const {
   if (empty()) return *this;
   Box b;
@@ -29,7 +18,7 @@ bool Box::overlaps(const Box& b) const {
 }
 
 double wrap_angle(double a) {
-  a = std::fmod(a + kPi, kTwoPi);
+  a = fmod_two_pi(a + kPi);
   if (a < 0.0) a += kTwoPi;
   return a - kPi;
 }
@@ -123,7 +112,7 @@ double curve_length(const Curve& c) {
 double arc_parameter_of_angle(const Curve& arc, double a) {
   const double span = std::fabs(arc.sweep);
   double delta = arc.sweep > 0.0 ? a - arc.start_angle : arc.start_angle - a;
-  delta = std::fmod(delta, kTwoPi);
+  delta = fmod_two_pi(delta);
   if (delta < 0.0) delta += kTwoPi;
   // Off the arc, report the angle beyond whichever end is nearer, so that callers can
   // accept points a tolerance outside either end.
@@ -131,15 +120,32 @@ double arc_parameter_of_angle(const Curve& arc, double a) {
   return delta / span;
 }
 
+namespace {
+
+// The angles of the four axis directions and their unit vectors, computed once.
+struct AxisDirection {
+  double angle;
+  Vec2 unit;
+};
+const std::array<AxisDirection, 4>& axis_directions() {
+  static const std::array<AxisDirection, 4> axes = [] {
+    std::array<AxisDirection, 4> a;
+    for (int k = 0; k < 4; ++k) a[k] = {k * (kPi / 2.0), unit_vector(k * (kPi / 2.0))};
+    return a;
+  }();
+  return axes;
+}
+
+}  // namespace
+
 Box bounding_box(const Curve& c) {
   Box b;
   b.add(c.from);
   b.add(c.to);
   if (c.is_segment()) return b;
-  for (int k = 0; k < 4; ++k) {
-    const double axis_angle = k * (kPi / 2.0);
-    const double t = arc_parameter_of_angle(c, axis_angle);
-    if (t >= 0.0 && t <= 1.0) b.add(c.center + c.radius * unit_vector(axis_angle));
+  for (const AxisDirection& axis : axis_directions()) {
+    const double t = arc_parameter_of_angle(c, axis.angle);
+    if (t >= 0.0 && t <= 1.0) b.add(c.center + c.radius * axis.unit);
   }
   return b;
 }

@@ -32,6 +32,21 @@ double distance_to_curve(const Curve& c, Vec2 p) {
   return std::min(distance(p, c.from), distance(p, c.to));
 }
 
+// The same steps as closest_parameter and distance_to_curve, sharing the arc's angle.
+NearestPoint nearest_point(const Curve& c, Vec2 p) {
+  if (c.is_segment()) {
+    const double t = closest_parameter(c, p);
+    return {t, distance(p, point_at(c, t))};
+  }
+  const Vec2 r = p - c.center;
+  const double rho = length(r);
+  if (r.x == 0.0 && r.y == 0.0) return {0.0, c.radius};  // every point of the arc is nearest
+  const double t = arc_parameter_of_angle(c, std::atan2(r.y, r.x));
+  if (t >= 0.0 && t <= 1.0) return {t, rho == 0.0 ? c.radius : std::fabs(rho - c.radius)};
+  const double to_from = distance(p, c.from), to_to = distance(p, c.to);
+  return {to_from <= to_to ? 0.0 : 1.0, rho == 0.0 ? c.radius : std::min(to_from, to_to)};
+}
+
 // Segments meet when each one's endpoints are not strictly on one side of the other.
 double distance_segment_segment(const Curve& a, const Curve& b) {
   const Vec2 da = a.to - a.from, db = b.to - b.from;

@@ -67,6 +67,19 @@ double carrier_slack(const Curve& c, double eps) {
   return c.is_arc() ? 0.0 : eps * length(c.to - c.from);
 }
 
+// Whether add_hit would drop a point hit at p whatever its parameters: both hits are taken,
+// or one lies within eps of p. Checked first, as the shared end of two contact segments
+// meeting end to end is nearly always found already, and its parameter on the other curve
+// costs an angle.
+bool drops_hit_at(const Intersection& r, Vec2 p, double eps) {
+  if (r.count >= 2) return true;
+  for (int i = 0; i < r.count; ++i) {
+    const IntersectionHit& o = r.hits[i];
+    if (distance(o.point, p) <= eps || (o.is_piece && distance(o.point_end, p) <= eps)) return true;
+  }
+  return false;
+}
+
 // Adds endpoint touches that the closed-form solution may have lost to round-off. When the
 // carriers were found tangent (within eps of touching), every common point is a tangency:
 // the two curves run within eps of each other there and never cross, even where the exact
@@ -76,14 +89,16 @@ void add_endpoint_touches(Intersection& r, const Curve& a, const Curve& b, bool 
                           double eps) {
   const double slack_a = carrier_slack(a, eps), slack_b = carrier_slack(b, eps);
   for (double ta : {0.0, 1.0}) {
-    const Vec2 p = point_at(a, ta);
-    if (near_carrier(b, p, eps, slack_b) && distance_to_curve(b, p) <= eps)
-      add_hit(r, point_hit(p, ta, closest_parameter(b, p), tangent), eps);
+    const Vec2 p = ta == 0.0 ? a.from : a.to;  // point_at(a, ta)
+    if (!near_carrier(b, p, eps, slack_b) || drops_hit_at(r, p, eps)) continue;
+    const NearestPoint n = nearest_point(b, p);
+    if (n.distance <= eps) add_hit(r, point_hit(p, ta, n.t, tangent), eps);
   }
   for (double tb : {0.0, 1.0}) {
-    const Vec2 p = point_at(b, tb);
-    if (near_carrier(a, p, eps, slack_a) && distance_to_curve(a, p) <= eps)
-      add_hit(r, point_hit(p, closest_parameter(a, p), tb, tangent), eps);
+    const Vec2 p = tb == 0.0 ? b.from : b.to;  // point_at(b, tb)
+    if (!near_carrier(a, p, eps, slack_a) || drops_hit_at(r, p, eps)) continue;
+    const NearestPoint n = nearest_point(a, p);
+    if (n.distance <= eps) add_hit(r, point_hit(p, n.t, tb, tangent), eps);
   }
 }
 
@@ -149,7 +164,7 @@ void cocircular_overlap(Intersection& r, const Curve& a, const Curve& b, double 
   const double ccw_start_b = b.sweep > 0.0 ? b.start_angle : b.start_angle + b.sweep;
   const double span_a = std::fabs(a.sweep), span_b = std::fabs(b.sweep);
   const double angular_eps = eps / a.radius;
-  double offset = std::fmod(ccw_start_b - ccw_start_a, kTwoPi);
+  double offset = fmod_two_pi(ccw_start_b - ccw_start_a);
   if (offset < 0.0) offset += kTwoPi;
   // b's interval, relative to a's start, may wrap: consider it and its copy one turn earlier.
   for (double shift : {offset - kTwoPi, offset}) {

@@ -13,24 +13,12 @@
 #include <cstdint>
 #include <cstring>
 #include <numeric>
-#include <tuple>
-#include <unordered_map>
 
 #include "parts/loop_queries.hpp"
+#include "slice/split_points.hpp"
 
 namespace cslice {
 namespace {
-
-// How the intersection step said two curves meet at a point.
-enum class Meeting : char { other, tangent, crossing };
-
-struct SplitPoint {
-  int curve;
-  double t;
-  Vec2 p;
-  int met = -1;  // the other curve, when this point is where the two touch or cross
-  Meeting how = Meeting::other;
-};
 
 // (vertex, curve, curve) with the curves' indices ascending: pairs of curves that the
 // intersection step found crossing at that vertex; (-1, curve, curve): pairs it found
@@ -40,9 +28,13 @@ struct Meetings {
   std::vector<MeetingKey> tangents, crossings;  // sorted
 };
 
+// Union-find over 0 .. n - 1, reset in place so its array serves many arrangements.
 class UnionFind {
  public:
-  explicit UnionFind(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  void reset(size_t n) {
+    parent_.resize(n);
+    std::iota(parent_.begin(), parent_.end(), 0);
+  }
   int find(int a) {
     while (parent_[a] != a) a = parent_[a] = parent_[parent_[a]];
     return a;
@@ -57,173 +49,82 @@ class UnionFind {
   std::vector<int> parent_;
 };
 
-// Every pair of curves whose boxes overlap, found by sweeping boxes sorted by their left x.
-std::vector<std::pair<int, int>> candidate_pairs(const std::vector<Box>& boxes) {
-  std::vector<int> order(boxes.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-            [&](int a, int b) { return boxes[a].lo.x < boxes[b].lo.x; });
-  std::vector<Box> sorted(boxes.size());  // contiguous for the sweep
-  for (size_t i = 0; i < order.size(); ++i) sorted[i] = boxes[order[i]];
-  std::vector<std::pair<int, int>> pairs;
-  for (size_t i = 0; i < sorted.size(); ++i) {
-    const Box& a = sorted[i];
-    for (size_t j = i + 1; j < sorted.size() && sorted[j].lo.x <= a.hi.x; ++j) {
-      const Box& b = sorted[j];  // Box::overlaps, knowing b.lo.x <= a.hi.x
-      if (!(b.hi.x < a.lo.x || b.lo.y > a.hi.y || b.hi.y < a.lo.y))
-        pairs.emplace_back(order[i], order[j]);
-    }
-  }
-  return pairs;
-}
+}  // namespace
 
-// Two curves that meet, and where they may run within eps of each other: a piece shared by
-// both (collinear or co-circular within eps), as parameter ranges, or, for curves meeting at
-// points, their whole ranges (near = true: only points within eps of the other count).
-struct SharedPiece {
-  int a, b;
-  double a_lo, a_hi, b_lo, b_hi;
-  bool near = false;
-};
-
-// Curves within eps of each other along a stretch must be cut at the same vertices there, or
-// their pieces would not coincide and a third curve would cross them in an order that
-// round-off decides: two lines closer than eps crossed by a third at a shallow angle get
-// their crossings at points farther apart than eps. The same holds for curves that only meet
-// at points, next to those points: arcs the intersection step calls tangent (a lens thinner
-// than eps) and curves crossing at a shallow angle stay within eps of each other for up to
-// sqrt(eps / curvature) or eps / angle. So every split point of one curve inside a shared
-// piece, or within eps of a curve it meets, is copied to the other, at the same point; the
-// pieces between them then merge into one edge. Two passes carry points along chains.
-// Split point indices grouped by curve (counting sort): those of curve c are
-// index[start[c] .. start[c + 1]).
-struct SplitsByCurve {
-  std::vector<int> start, index;
-  SplitsByCurve(const std::vector<SplitPoint>& splits, size_t first, size_t curves)
-      : start(curves + 1, 0), index(splits.size() - first) {
-    for (size_t k = first; k < splits.size(); ++k) ++start[splits[k].curve + 1];
-    for (size_t c = 0; c < curves; ++c) start[c + 1] += start[c];
-    std::vector<int> fill(start.begin(), start.end() - 1);
-    for (size_t k = first; k < splits.size(); ++k) index[fill[splits[k].curve]++] = int(k);
-  }
-  std::span<const int> of(int c) const {
-    return {index.data() + start[c], index.data() + start[c + 1]};
-  }
-};
-
-void share_split_points(const std::vector<Curve>& curves, const std::vector<Box>& boxes,
-                        const std::vector<SharedPiece>& shared, std::vector<SplitPoint>& splits,
-                        double eps) {
-  if (shared.empty()) return;
-  size_t first_new = 0;
-  for (int pass = 0; pass < 2; ++pass) {
-    const SplitsByCurve fresh(splits, first_new, curves.size());
-    const SplitsByCurve all = first_new == 0 ? fresh : SplitsByCurve(splits, 0, curves.size());
-    // The fresh points in curve order, compact, each with where it is on its own curve.
-    struct Fresh {
-      double t;
-      int met;
-      Vec2 p, on_curve;
-    };
-    std::vector<Fresh> points(fresh.index.size());
-    for (size_t i = 0; i < points.size(); ++i) {
-      const SplitPoint& sp = splits[fresh.index[i]];
-      points[i] = {sp.t, sp.met, sp.p, point_at(curves[sp.curve], sp.t)};
-    }
-    // A point within eps of one the curve already has would join that one's vertex anyway.
-    auto has_point_near = [&](int c, Vec2 p) {
-      for (int k : all.of(c))
-        if (length_squared(splits[k].p - p) <= eps * eps) return true;
-      return false;
-    };
-    std::vector<SplitPoint> added;
-    for (const SharedPiece& sp : shared) {
-      for (const auto& [from, to, lo, hi] :
-           {std::tuple{sp.a, sp.b, sp.a_lo, sp.a_hi}, std::tuple{sp.b, sp.a, sp.b_lo, sp.b_hi}}) {
-        for (int i = fresh.start[from]; i < fresh.start[from + 1]; ++i) {
-          const Fresh& p = points[i];
-          if (p.t < lo || p.t > hi) continue;
-          if (sp.near) {
-            if (p.met == to) continue;  // where the two meet: already on both
-            // Measured from the curve's own point, so that a vertex carried onto a curve
-            // passes on to the curves that one runs beside. Outside the other's box grown by
-            // eps is farther than eps from it.
-            const Vec2 q = p.on_curve;
-            const Box& box = boxes[to];
-            if (q.x < box.lo.x || q.x > box.hi.x || q.y < box.lo.y || q.y > box.hi.y) continue;
-            if (has_point_near(to, p.p) || distance_to_curve(curves[to], q) > eps) continue;
-          }
-          added.push_back({to, closest_parameter(curves[to], p.p), p.p});
-        }
-      }
-    }
-    if (added.empty()) return;
-    first_new = splits.size();
-    splits.insert(splits.end(), added.begin(), added.end());
-  }
-}
-
-std::vector<SplitPoint> split_points(const std::vector<Curve>& curves, double eps) {
+// Every working array of ArrangementBuilder::build, kept between builds.
+struct ArrangementBuilder::Scratch {
+  SplitScratch split;
   std::vector<SplitPoint> splits;
-  std::vector<SharedPiece> shared;
-  std::vector<Box> boxes;
-  for (size_t i = 0; i < curves.size(); ++i) {
-    splits.push_back({int(i), 0.0, curves[i].from});
-    splits.push_back({int(i), 1.0, curves[i].to});
-    boxes.push_back(bounding_box(curves[i]).inflated(eps));
-  }
-  for (auto [i, j] : candidate_pairs(boxes)) {
-    const Intersection x = intersect(curves[i], curves[j], eps);
-    bool piece = false;
-    for (int k = 0; k < x.count; ++k) {
-      const IntersectionHit& h = x.hits[k];
-      // A point hit inside both curves, not a tangency, is a crossing; at an end of either
-      // curve it is a touch (that curve ends there).
-      const Meeting how = h.is_piece     ? Meeting::other
-                          : h.is_tangent ? Meeting::tangent
-                          : (h.ta0 > 0.0 && h.ta0 < 1.0 && h.tb0 > 0.0 && h.tb0 < 1.0)
-                              ? Meeting::crossing
-                              : Meeting::other;
-      splits.push_back({i, h.ta0, h.point, j, how});
-      splits.push_back({j, h.tb0, h.point, i, how});
-      if (h.is_piece) {
-        piece = true;
-        splits.push_back({i, h.ta1, h.point_end});
-        splits.push_back({j, h.tb1, h.point_end});
-        shared.push_back({i, j, std::min(h.ta0, h.ta1), std::max(h.ta0, h.ta1),
-                          std::min(h.tb0, h.tb1), std::max(h.tb0, h.tb1)});
-      }
-    }
-    if (x.count > 0 && !piece) shared.push_back({i, j, 0.0, 1.0, 0.0, 1.0, true});
-  }
-  share_split_points(curves, boxes, shared, splits, eps);
-  return splits;
-}
+  std::vector<std::pair<double, int>> by_x;
+  std::vector<uint64_t> keys;
+  std::vector<int> next, count;
+  std::vector<Vec2> points_by_x;
+  std::vector<int> order, vertex_of, vertex_of_root, fill;
+  UnionFind uf;
+  std::vector<int> start, along;
+  std::vector<std::pair<double, int>> at_t;
+  std::vector<ArrangementEdge> pieces;
+  std::vector<std::pair<int, int>> end_pairs;
+  std::vector<int> kept;
+  std::vector<Vec2> kept_mid;
+  Meetings meetings;
+  struct Direction {
+    int vertex;
+    int half_edge;
+    int curve;  // the contact segment the edge comes from
+    double angle;
+    double curvature;
+    Vec2 tangent;  // unit, leaving the vertex
+    Vec2 start;    // where the piece really leaves from, before snapping to the vertex
+  };
+  std::vector<Direction> dirs;
+  std::vector<int> position, comp;
+  std::vector<double> area;
+  std::vector<Box> box;  // per edge, from trace_cycles on
+  std::vector<int> outer_of_component, bounded, candidates;
+  struct Probe {
+    Vec2 p;
+    int cycle;
+  };
+  std::vector<Probe> probes;
+  std::vector<char> placed, inside;
+  std::vector<Vec2> points;
+};
+
+namespace {
+
+using Scratch = ArrangementBuilder::Scratch;
+using Direction = Scratch::Direction;
 
 // Indices 0 .. n - 1 sorted by x(i), ties by index: an LSD radix sort on the bits of the
-// doubles (made unsigned-comparable), stable, so equal keys keep their index order.
+// doubles (made unsigned-comparable), stable, so equal keys keep their index order; the
+// same order as sorting (x, index) pairs, which is cheaper below a few thousand points.
 template <class X>
-std::vector<int> sorted_by_x(size_t n, X x) {
+void sorted_by_x(size_t n, X x, Scratch& s) {
+  std::vector<int>& order = s.order;
+  order.resize(n);
   if (n < 4096) {  // the radix passes only pay off on many points
-    std::vector<std::pair<double, int>> pairs(n);
-    for (size_t i = 0; i < n; ++i) pairs[i] = {x(i), int(i)};
-    std::sort(pairs.begin(), pairs.end());
-    std::vector<int> order(n);
-    for (size_t i = 0; i < n; ++i) order[i] = pairs[i].second;
-    return order;
+    s.by_x.resize(n);
+    for (size_t i = 0; i < n; ++i) s.by_x[i] = {x(i), int(i)};
+    std::sort(s.by_x.begin(), s.by_x.end());
+    for (size_t i = 0; i < n; ++i) order[i] = s.by_x[i].second;
+    return;
   }
-  std::vector<uint64_t> key(n);
+  std::vector<uint64_t>& key = s.keys;
+  key.resize(n);
   for (size_t i = 0; i < n; ++i) {
     const double v = x(i) == 0.0 ? 0.0 : x(i);  // -0 and +0 are equal
     uint64_t bits;
     std::memcpy(&bits, &v, sizeof bits);
     key[i] = bits >> 63 ? ~bits : bits | (uint64_t{1} << 63);
   }
-  std::vector<int> order(n), next(n);
+  std::vector<int>& next = s.next;
+  next.resize(n);
   std::iota(order.begin(), order.end(), 0);
   constexpr int kDigit = 11;
   constexpr uint64_t kMask = (uint64_t{1} << kDigit) - 1;
-  std::vector<int> count(kMask + 2);
+  std::vector<int>& count = s.count;
+  count.resize(kMask + 2);
   for (int shift = 0; shift < 64; shift += kDigit) {
     std::fill(count.begin(), count.end(), 0);
     for (size_t i = 0; i < n; ++i) ++count[((key[i] >> shift) & kMask) + 1];
@@ -233,34 +134,41 @@ std::vector<int> sorted_by_x(size_t n, X x) {
     for (int i : order) next[count[(key[i] >> shift) & kMask]++] = i;
     order.swap(next);
   }
-  return order;
 }
 
-// Merges split points closer than eps (transitively) into vertices; returns the vertex of
-// each split point and fills the vertex positions (each the first point of its cluster).
+// Merges split points closer than eps (transitively) into vertices; fills the vertex of each
+// split point (s.vertex_of) and the vertex positions (each the first point of its cluster).
 // A sweep in x compares each point with the following ones less than eps further right.
-std::vector<int> merge_points(const std::vector<SplitPoint>& splits, double eps,
-                              std::vector<Vec2>& vertices) {
-  const std::vector<int> order =
-      sorted_by_x(splits.size(), [&](size_t i) { return splits[i].p.x; });
-  UnionFind uf(splits.size());
-  for (size_t i = 0; i < order.size(); ++i) {
-    const Vec2 p = splits[order[i]].p;
-    for (size_t j = i + 1; j < order.size() && splits[order[j]].p.x - p.x <= eps; ++j) {
-      const Vec2 q = splits[order[j]].p;
+void merge_points(Scratch& s, double eps, std::vector<Vec2>& vertices) {
+  const std::vector<SplitPoint>& splits = s.splits;
+  std::vector<int>& order = s.order;
+  sorted_by_x(
+      splits.size(), [&](size_t i) { return splits[i].p.x; }, s);
+  // The points in x order, contiguous: a cluster of many points within eps in x (a perfect
+  // fit where many contact segments meet) makes the sweep quadratic in its size.
+  const size_t n = splits.size();
+  std::vector<Vec2>& points = s.points_by_x;
+  points.resize(n);
+  for (size_t i = 0; i < n; ++i) points[i] = splits[order[i]].p;
+  UnionFind& uf = s.uf;
+  uf.reset(n);
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2 p = points[i];
+    for (size_t j = i + 1; j < n && points[j].x - p.x <= eps; ++j) {
+      const Vec2 q = points[j];
       if (std::fabs(q.y - p.y) <= eps && distance(p, q) <= eps) uf.unite(order[i], order[j]);
     }
   }
-  std::vector<int> vertex_of(splits.size()), vertex_of_root(splits.size(), -1);
+  s.vertex_of.resize(splits.size());
+  s.vertex_of_root.assign(splits.size(), -1);
   for (size_t i = 0; i < splits.size(); ++i) {
-    const int root = uf.find(int(i));
-    if (vertex_of_root[root] < 0) {
-      vertex_of_root[root] = int(vertices.size());
+    const int root = s.uf.find(int(i));
+    if (s.vertex_of_root[root] < 0) {
+      s.vertex_of_root[root] = int(vertices.size());
       vertices.push_back(splits[root].p);
     }
-    vertex_of[i] = vertex_of_root[root];
+    s.vertex_of[i] = s.vertex_of_root[root];
   }
-  return vertex_of;
 }
 
 // The piece of c between parameters t0 and t1, snapped to the given ends (make_arc without
@@ -280,36 +188,42 @@ Curve piece_of(const Curve& c, double t0, double t1, Vec2 from, Vec2 to) {
 }
 
 // Groups 0 .. n - 1 by key(i) in [0, keys) (counting sort, stable): the members of group g
-// are order[start[g] .. start[g + 1]), in increasing i.
+// are order[start[g] .. start[g + 1]), in increasing i. `fill` is a buffer.
 template <class Key>
-void group_by(size_t n, size_t keys, Key key, std::vector<int>& start, std::vector<int>& order) {
+void group_by(size_t n, size_t keys, Key key, std::vector<int>& start, std::vector<int>& order,
+              std::vector<int>& fill) {
   start.assign(keys + 1, 0);
   for (size_t i = 0; i < n; ++i) ++start[key(i) + 1];
   for (size_t g = 0; g < keys; ++g) start[g + 1] += start[g];
   order.resize(n);
-  std::vector<int> fill(start.begin(), start.end() - 1);
+  fill.assign(start.begin(), start.end() - 1);
   for (size_t i = 0; i < n; ++i) order[fill[key(i)]++] = int(i);
 }
 
 // Merges coincident edges (same ends, same midpoint) into the first of them, which then
 // carries every label. Candidates share their pair of end vertices: pieces are grouped by
 // their lower end, then sorted by the other one within each (small) group.
-void merge_coincident_edges(Arrangement& arr, std::vector<ArrangementEdge>& pieces, double eps) {
-  std::vector<std::pair<int, int>> end_pairs(pieces.size());  // compact: read many times
+void merge_coincident_edges(Arrangement& arr, Scratch& s, double eps) {
+  std::vector<ArrangementEdge>& pieces = s.pieces;
+  std::vector<std::pair<int, int>>& end_pairs = s.end_pairs;  // compact: read many times
+  end_pairs.resize(pieces.size());
   for (size_t i = 0; i < pieces.size(); ++i)
     end_pairs[i] = {std::min(pieces[i].u, pieces[i].v), std::max(pieces[i].u, pieces[i].v)};
   auto ends = [&](int i) { return end_pairs[i]; };
-  std::vector<int> start, order;
+  std::vector<int>& start = s.start;
+  std::vector<int>& order = s.order;
   group_by(
       pieces.size(), arr.vertices.size(), [&](size_t i) { return ends(int(i)).first; }, start,
-      order);
+      order, s.fill);
   for (size_t g = 0; g + 1 < start.size(); ++g)
     if (start[g + 1] - start[g] > 1)
       std::sort(order.begin() + start[g], order.begin() + start[g + 1],
                 [&](int a, int b) { return ends(a) != ends(b) ? ends(a) < ends(b) : a < b; });
   arr.edges.reserve(pieces.size());
-  std::vector<int> kept(pieces.size(), -1);  // piece -> arrangement edge
-  std::vector<Vec2> kept_mid;                // midpoint of each edge kept so far, when needed
+  std::vector<int>& kept = s.kept;  // piece -> arrangement edge
+  kept.assign(pieces.size(), -1);
+  std::vector<Vec2>& kept_mid = s.kept_mid;  // midpoint of each edge kept so far, when needed
+  kept_mid.clear();
   for (size_t i = 0; i < order.size(); ++i) {
     ArrangementEdge& e = pieces[order[i]];
     const bool after_same = i > 0 && ends(order[i - 1]) == ends(order[i]);
@@ -343,15 +257,19 @@ void merge_coincident_edges(Arrangement& arr, std::vector<ArrangementEdge>& piec
   }
 }
 
-void build_edges(Arrangement& arr, const std::vector<Curve>& curves, const std::vector<int>& ids,
-                 const std::vector<SplitPoint>& splits, const std::vector<int>& vertex_of,
-                 double eps) {
+void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
+                 const std::vector<int>& ids, double eps) {
+  const std::vector<SplitPoint>& splits = s.splits;
+  const std::vector<int>& vertex_of = s.vertex_of;
   // Split points along each curve in order of (t, index): grouped by curve, then each
   // curve's few points sorted (as compact (t, index) pairs).
-  std::vector<int> start, along;
+  std::vector<int>& start = s.start;
+  std::vector<int>& along = s.along;
   group_by(
-      splits.size(), curves.size(), [&](size_t i) { return splits[i].curve; }, start, along);
-  std::vector<std::pair<double, int>> at_t(splits.size());
+      splits.size(), curves.size(), [&](size_t i) { return splits[i].curve; }, start, along,
+      s.fill);
+  std::vector<std::pair<double, int>>& at_t = s.at_t;
+  at_t.resize(splits.size());
   for (size_t k = 0; k < along.size(); ++k) at_t[k] = {splits[along[k]].t, along[k]};
   for (size_t c = 0; c < curves.size(); ++c)
     std::sort(at_t.begin() + start[c], at_t.begin() + start[c + 1]);
@@ -366,7 +284,8 @@ void build_edges(Arrangement& arr, const std::vector<Curve>& curves, const std::
     const Vec2 p = t == 0.0 ? c.from : t == 1.0 ? c.to : c.center + c.radius * radial;
     return OnCurve{p, c.sweep > 0.0 ? perp_left(radial) : perp_right(radial)};
   };
-  std::vector<ArrangementEdge> pieces;
+  std::vector<ArrangementEdge>& pieces = s.pieces;
+  pieces.clear();
   pieces.reserve(splits.size());
   for (size_t c = 0; c < curves.size(); ++c) {
     const Curve& curve = curves[c];
@@ -392,18 +311,8 @@ void build_edges(Arrangement& arr, const std::vector<Curve>& curves, const std::
       e.labels.push_back({ids[c], true});
     }
   }
-  merge_coincident_edges(arr, pieces, eps);
+  merge_coincident_edges(arr, s, eps);
 }
-
-struct Direction {
-  int vertex;
-  int half_edge;
-  int curve;  // the contact segment the edge comes from
-  double angle;
-  double curvature;
-  Vec2 tangent;  // unit, leaving the vertex
-  Vec2 start;    // where the piece really leaves from, before snapping to the vertex
-};
 
 // Whether b, leaving a vertex just counterclockwise of a (by angle), really lies clockwise
 // of it. The decision follows the intersection step, so the arrangement stays consistent:
@@ -439,41 +348,54 @@ bool lies_clockwise(const Direction& a, const Direction& b, const Meetings& meet
 }
 
 // Orders the half-edges leaving each vertex counterclockwise by tangent, ties (tangent
-// curves) broken by curvature: the one turning left comes later.
-void order_outgoing(Arrangement& arr, const Meetings& meetings, double eps, double angular_eps) {
-  std::vector<Direction> dirs(2 * arr.edges.size());  // by half-edge
-  for (size_t e = 0; e < arr.edges.size(); ++e) {
-    const ArrangementEdge& edge = arr.edges[e];
-    const Vec2 t0 = edge.tangent_u, t1 = -edge.tangent_v;
-    const double k = signed_curvature(edge.curve);
-    dirs[2 * e] = {edge.u, int(2 * e), edge.source, std::atan2(t0.y, t0.x), k, t0, edge.point_u};
-    dirs[2 * e + 1] = {edge.v, int(2 * e + 1), edge.source, std::atan2(t1.y, t1.x), -k,
-                       t1,     edge.point_v};
-  }
-  for (Direction& x : dirs)
-    if (x.angle > kPi - angular_eps) x.angle -= kTwoPi;  // one representative for +-pi
+// curves) broken by curvature: the one turning left comes later. Only vertices of degree 3
+// or more need it: one or two half-edges are in counterclockwise order either way, and
+// every later step reads the order cyclically (next around a face, sectors between
+// neighbours), so those are left in half-edge order without computing their angles.
+void order_outgoing(Arrangement& arr, Scratch& s, double eps, double angular_eps) {
   group_by(
-      dirs.size(), arr.vertices.size(), [&](size_t h) { return dirs[h].vertex; },
-      arr.outgoing_start, arr.outgoing_edges);
+      2 * arr.edges.size(), arr.vertices.size(),
+      [&](size_t h) { return h % 2 == 0 ? arr.edges[h / 2].u : arr.edges[h / 2].v; },
+      arr.outgoing_start, arr.outgoing_edges, s.fill);
+  std::vector<Direction>& dirs = s.dirs;  // by half-edge, those at vertices of degree >= 3
+  dirs.resize(2 * arr.edges.size());
   for (size_t v = 0; v < arr.vertices.size(); ++v) {
+    if (arr.outgoing_start[v + 1] - arr.outgoing_start[v] < 3) continue;
     const auto first = arr.outgoing_edges.begin() + arr.outgoing_start[v];
     const auto last = arr.outgoing_edges.begin() + arr.outgoing_start[v + 1];
+    for (auto it = first; it != last; ++it) {
+      const int h = *it;
+      const ArrangementEdge& edge = arr.edges[h / 2];
+      const bool forward = h % 2 == 0;
+      const Vec2 t = forward ? edge.tangent_u : -edge.tangent_v;
+      const double k = signed_curvature(edge.curve);
+      Direction& x = dirs[h];
+      x = {int(v),
+           h,
+           edge.source,
+           std::atan2(t.y, t.x),
+           forward ? k : -k,
+           t,
+           forward ? edge.point_u : edge.point_v};
+      if (x.angle > kPi - angular_eps) x.angle -= kTwoPi;  // one representative for +-pi
+    }
     std::sort(first, last, [&](int a, int b) {
       return dirs[a].angle != dirs[b].angle ? dirs[a].angle < dirs[b].angle : a < b;
     });
     // Insertion pass: nearly sorted already, only neighbours side by side move.
     for (auto i = first + 1; i < last; ++i)
       for (auto j = i;
-           j > first && lies_clockwise(dirs[*(j - 1)], dirs[*j], meetings, eps, angular_eps); --j)
+           j > first && lies_clockwise(dirs[*(j - 1)], dirs[*j], s.meetings, eps, angular_eps); --j)
         std::iter_swap(j - 1, j);
   }
 }
 
 // Links each half-edge to the next around its left face: at its target, the half-edge just
 // clockwise of its twin.
-void link_half_edges(Arrangement& arr) {
+void link_half_edges(Arrangement& arr, Scratch& s) {
   const size_t n = 2 * arr.edges.size();
-  std::vector<int> position(n);
+  std::vector<int>& position = s.position;
+  position.resize(n);
   for (int v = 0; v < int(arr.vertices.size()); ++v) {
     const std::span<const int> out = arr.outgoing(v);
     for (size_t i = 0; i < out.size(); ++i) position[out[i]] = int(i);
@@ -487,75 +409,105 @@ void link_half_edges(Arrangement& arr) {
   }
 }
 
-std::vector<int> vertex_components(const Arrangement& arr) {
-  UnionFind uf(arr.vertices.size());
-  for (const ArrangementEdge& e : arr.edges) uf.unite(e.u, e.v);
-  std::vector<int> comp(arr.vertices.size());
-  for (size_t v = 0; v < comp.size(); ++v) comp[v] = uf.find(int(v));
-  return comp;
+void vertex_components(const Arrangement& arr, Scratch& s) {
+  s.uf.reset(arr.vertices.size());
+  for (const ArrangementEdge& e : arr.edges) s.uf.unite(e.u, e.v);
+  s.comp.resize(arr.vertices.size());
+  for (size_t v = 0; v < s.comp.size(); ++v) s.comp[v] = s.uf.find(int(v));
 }
 
-void trace_cycles(Arrangement& arr) {
+void trace_cycles(Arrangement& arr, Scratch& s) {
   const size_t n = 2 * arr.edges.size();
-  const std::vector<int> comp = vertex_components(arr);
+  vertex_components(arr, s);
   // Per edge, once: its area term (the twin's is the negation: the chord's cross product and
   // the circular segment both change sign) and its box (the same both ways).
-  std::vector<double> area(arr.edges.size());
-  std::vector<Box> box(arr.edges.size());
+  std::vector<double>& area = s.area;
+  std::vector<Box>& box = s.box;
+  area.resize(arr.edges.size());
+  box.resize(arr.edges.size());
   for (size_t e = 0; e < arr.edges.size(); ++e) {
     area[e] = signed_area_contribution(arr.edges[e].curve);
     box[e] = bounding_box(arr.edges[e].curve);
   }
   arr.cycle_of.assign(n, -1);
+  arr.cycle_half_edges.reserve(n);
   for (size_t start = 0; start < n; ++start) {
     if (arr.cycle_of[start] >= 0) continue;
     ArrangementCycle cycle;
-    cycle.component = comp[arr.origin(int(start))];
+    cycle.first = int(arr.cycle_half_edges.size());
+    cycle.component = s.comp[arr.origin(int(start))];
     int h = int(start);
     do {
       arr.cycle_of[h] = int(arr.cycles.size());
-      cycle.half_edges.push_back(h);
+      arr.cycle_half_edges.push_back(h);
       cycle.area += h % 2 == 0 ? area[h / 2] : -area[h / 2];
       cycle.box.add(box[h / 2]);
       h = arr.next[h];
     } while (h != int(start) && arr.cycle_of[h] < 0);
-    arr.cycles.push_back(std::move(cycle));
+    cycle.count = int(arr.cycle_half_edges.size()) - cycle.first;
+    arr.cycles.push_back(cycle);
   }
 }
 
 // Even-odd containment of many points (sorted by y) in one cycle at once: each curve toggles
 // only the points within its own y-range, so a long cycle costs its length plus the points
-// near each curve, not its length times the points.
-std::vector<char> cycle_encloses(const Arrangement& arr, const ArrangementCycle& c,
-                                 const std::vector<Vec2>& points_by_y) {
-  std::vector<char> inside(points_by_y.size(), false);
+// near each curve, not its length times the points. Fills `inside`; `edge_boxes` are the
+// edges' boxes.
+void cycle_encloses(const Arrangement& arr, int cycle, const std::vector<Box>& edge_boxes,
+                    const std::vector<Vec2>& points_by_y, std::vector<char>& inside) {
+  inside.assign(points_by_y.size(), false);
   auto y_less = [](const Vec2& p, double y) { return p.y < y; };
-  for (int h : c.half_edges) {
+  for (int h : arr.half_edges(cycle)) {
     const Curve& curve = arr.edges[h / 2].curve;  // parity does not depend on direction
-    const Box box = bounding_box(curve);
+    const Box& box = edge_boxes[h / 2];
     auto it = std::lower_bound(points_by_y.begin(), points_by_y.end(), box.lo.y, y_less);
     for (; it != points_by_y.end() && it->y <= box.hi.y; ++it)
       if (toggles_parity(curve, *it)) inside[it - points_by_y.begin()] ^= 1;
   }
-  return inside;
+}
+
+// Lists each face's cycles: a bounded face's own cycle first, then the outer cycles of the
+// components inside it in cycle order, so face cycle lists do not depend on how the faces
+// were found.
+void list_face_cycles(Arrangement& arr, Scratch& s) {
+  const std::vector<int>& outer = s.outer_of_component;
+  std::vector<int>& fill = s.fill;
+  fill.assign(arr.faces.size(), 0);
+  for (const ArrangementCycle& c : arr.cycles) ++fill[c.face];
+  int first = 0;
+  for (size_t f = 0; f < arr.faces.size(); ++f) {
+    arr.faces[f].first = first;
+    arr.faces[f].count = fill[f];
+    first += fill[f];
+    fill[f] = arr.faces[f].first;
+  }
+  arr.face_cycle_list.resize(arr.cycles.size());
+  for (size_t c = 0; c < arr.cycles.size(); ++c)
+    if (outer[arr.cycles[c].component] != int(c))
+      arr.face_cycle_list[fill[arr.cycles[c].face]++] = int(c);
+  for (size_t c = 0; c < arr.cycles.size(); ++c)
+    if (outer[arr.cycles[c].component] == int(c))
+      arr.face_cycle_list[fill[arr.cycles[c].face]++] = int(c);
 }
 
 // Every connected component has exactly one outer cycle, the one of least signed area (a
 // tree's only cycle has area 0); each of its other cycles bounds a face of its own, however
 // small, so no area threshold decides topology. An outer cycle belongs to the smallest
 // bounded face of another component around it, or to the unbounded face.
-void assign_faces(Arrangement& arr) {
-  std::unordered_map<int, int> outer_of_component;
+void assign_faces(Arrangement& arr, Scratch& s) {
+  std::vector<int>& outer = s.outer_of_component;  // by component (its lowest vertex)
+  outer.assign(arr.vertices.size(), -1);
   for (size_t c = 0; c < arr.cycles.size(); ++c) {
-    auto [it, added] = outer_of_component.emplace(arr.cycles[c].component, int(c));
-    if (!added && arr.cycles[c].area < arr.cycles[it->second].area) it->second = int(c);
+    int& o = outer[arr.cycles[c].component];
+    if (o < 0 || arr.cycles[c].area < arr.cycles[o].area) o = int(c);
   }
   arr.faces.assign(1, ArrangementFace{});
-  std::vector<int> bounded;
+  std::vector<int>& bounded = s.bounded;
+  bounded.clear();
   for (size_t c = 0; c < arr.cycles.size(); ++c) {
-    if (outer_of_component[arr.cycles[c].component] == int(c)) continue;
+    if (outer[arr.cycles[c].component] == int(c)) continue;
     arr.cycles[c].face = int(arr.faces.size());
-    arr.faces.push_back({true, {int(c)}});
+    arr.faces.push_back({true});
     bounded.push_back(int(c));
   }
   // Each outer cycle is represented by its first vertex; its face is the smallest bounded
@@ -563,46 +515,57 @@ void assign_faces(Arrangement& arr) {
   // against the still unplaced points in its box.
   std::sort(bounded.begin(), bounded.end(),
             [&](int a, int b) { return arr.cycles[a].area < arr.cycles[b].area; });
-  struct Probe {
-    Vec2 p;
-    int cycle;
-  };
-  std::vector<Probe> probes;
-  for (const auto& [component, c] : outer_of_component) {
+  std::vector<Scratch::Probe>& probes = s.probes;
+  probes.clear();
+  for (size_t c = 0; c < arr.cycles.size(); ++c) {
+    if (outer[arr.cycles[c].component] != int(c)) continue;
     arr.cycles[c].face = 0;
-    probes.push_back({arr.vertices[arr.origin(arr.cycles[c].half_edges.front())], c});
+    probes.push_back({arr.vertices[arr.origin(arr.half_edges(int(c)).front())], int(c)});
   }
   std::sort(probes.begin(), probes.end(),
-            [](const Probe& a, const Probe& b) { return a.p.y < b.p.y; });
-  std::vector<char> placed(probes.size(), false);
-  std::vector<int> candidates;
-  std::vector<Vec2> points;
+            [](const Scratch::Probe& a, const Scratch::Probe& b) { return a.p.y < b.p.y; });
+  s.placed.assign(probes.size(), false);
   for (int k : bounded) {
     const ArrangementCycle& o = arr.cycles[k];
-    candidates.clear();
-    points.clear();
+    s.candidates.clear();
+    s.points.clear();
     auto it = std::lower_bound(probes.begin(), probes.end(), o.box.lo.y,
-                               [](const Probe& a, double y) { return a.p.y < y; });
+                               [](const Scratch::Probe& a, double y) { return a.p.y < y; });
     for (; it != probes.end() && it->p.y <= o.box.hi.y; ++it) {
       const size_t i = it - probes.begin();
-      if (placed[i] || it->p.x < o.box.lo.x || it->p.x > o.box.hi.x ||
+      if (s.placed[i] || it->p.x < o.box.lo.x || it->p.x > o.box.hi.x ||
           arr.cycles[it->cycle].component == o.component)
         continue;
-      candidates.push_back(int(i));
-      points.push_back(it->p);
+      s.candidates.push_back(int(i));
+      s.points.push_back(it->p);
     }
-    if (candidates.empty()) continue;
-    const std::vector<char> inside = cycle_encloses(arr, o, points);
-    for (size_t j = 0; j < candidates.size(); ++j) {
-      if (!inside[j]) continue;
-      placed[candidates[j]] = true;
-      arr.cycles[probes[candidates[j]].cycle].face = o.face;
+    if (s.candidates.empty()) continue;
+    cycle_encloses(arr, k, s.box, s.points, s.inside);
+    for (size_t j = 0; j < s.candidates.size(); ++j) {
+      if (!s.inside[j]) continue;
+      s.placed[s.candidates[j]] = true;
+      arr.cycles[probes[s.candidates[j]].cycle].face = o.face;
     }
   }
-  // Attach outer cycles in cycle order, so face cycle lists do not depend on hashing.
-  for (size_t c = 0; c < arr.cycles.size(); ++c)
-    if (outer_of_component[arr.cycles[c].component] == int(c))
-      arr.faces[arr.cycles[c].face].cycles.push_back(int(c));
+  list_face_cycles(arr, s);
+}
+
+// The pairs of curves the intersection step found tangent anywhere, or crossing at a vertex.
+void collect_meetings(Scratch& s) {
+  Meetings& m = s.meetings;
+  m.tangents.clear();
+  m.crossings.clear();
+  for (size_t i = 0; i < s.splits.size(); ++i) {
+    const SplitPoint& sp = s.splits[i];
+    if (sp.how == Meeting::other) continue;
+    const int a = sp.curve, b = sp.met;
+    if (sp.how == Meeting::tangent)
+      m.tangents.push_back({-1, std::min(a, b), std::max(a, b)});
+    else
+      m.crossings.push_back({s.vertex_of[i], std::min(a, b), std::max(a, b)});
+  }
+  std::sort(m.tangents.begin(), m.tangents.end());
+  std::sort(m.crossings.begin(), m.crossings.end());
 }
 
 }  // namespace
@@ -617,27 +580,28 @@ Curve Arrangement::half_curve(int h) const {
   return h % 2 == 0 ? c : reversed(c);
 }
 
-Arrangement build_arrangement(const std::vector<Curve>& curves, const std::vector<int>& segment_ids,
-                              const Tolerances& tol) {
-  Arrangement arr;
-  const std::vector<SplitPoint> splits = split_points(curves, tol.geometric);
-  const std::vector<int> vertex_of = merge_points(splits, tol.geometric, arr.vertices);
-  build_edges(arr, curves, segment_ids, splits, vertex_of, tol.geometric);
-  Meetings meetings;
-  for (size_t i = 0; i < splits.size(); ++i) {
-    if (splits[i].how == Meeting::other) continue;
-    const int a = splits[i].curve, b = splits[i].met;
-    if (splits[i].how == Meeting::tangent)
-      meetings.tangents.push_back({-1, std::min(a, b), std::max(a, b)});
-    else
-      meetings.crossings.push_back({vertex_of[i], std::min(a, b), std::max(a, b)});
-  }
-  std::sort(meetings.tangents.begin(), meetings.tangents.end());
-  std::sort(meetings.crossings.begin(), meetings.crossings.end());
-  order_outgoing(arr, meetings, tol.geometric, tol.angular);
-  link_half_edges(arr);
-  trace_cycles(arr);
-  assign_faces(arr);
+ArrangementBuilder::ArrangementBuilder() : scratch_(std::make_unique<Scratch>()) {}
+ArrangementBuilder::~ArrangementBuilder() = default;
+ArrangementBuilder::ArrangementBuilder(ArrangementBuilder&&) noexcept = default;
+ArrangementBuilder& ArrangementBuilder::operator=(ArrangementBuilder&&) noexcept = default;
+
+const Arrangement& ArrangementBuilder::build(const std::vector<Curve>& curves,
+                                             const std::vector<int>& segment_ids,
+                                             const Tolerances& tol) {
+  Arrangement& arr = arr_;
+  Scratch& s = *scratch_;
+  arr.vertices.clear();
+  arr.edges.clear();
+  arr.cycles.clear();
+  arr.cycle_half_edges.clear();
+  split_points(curves, tol.geometric, s.split, s.splits);
+  merge_points(s, tol.geometric, arr.vertices);
+  build_edges(arr, s, curves, segment_ids, tol.geometric);
+  collect_meetings(s);
+  order_outgoing(arr, s, tol.geometric, tol.angular);
+  link_half_edges(arr, s);
+  trace_cycles(arr, s);
+  assign_faces(arr, s);
   return arr;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -76,18 +77,21 @@ struct ArrangementEdge {
   Vec2 point_u, point_v;
 };
 
-// A closed walk of half-edges with its face on the left.
+// A closed walk of half-edges with its face on the left. Its half-edges are
+// Arrangement::half_edges(cycle): one flat list for all cycles, so that a rebuilt
+// arrangement reuses its storage.
 struct ArrangementCycle {
-  std::vector<int> half_edges;
-  double area = 0.0;  // signed: counterclockwise (> 0) around a bounded face
+  int first = 0, count = 0;  // its half-edges in Arrangement::cycle_half_edges
+  double area = 0.0;         // signed: counterclockwise (> 0) around a bounded face
   Box box;
   int face = -1;
   int component = -1;  // connected component of the graph
 };
 
+// A face's cycles are Arrangement::face_cycles(face), the outer one first when bounded.
 struct ArrangementFace {
   bool bounded = false;
-  std::vector<int> cycles;  // the outer cycle first when bounded
+  int first = 0, count = 0;  // its cycles in Arrangement::face_cycle_list
 };
 
 // Half-edge h runs along edge h / 2, forward (u to v) when h is even.
@@ -104,7 +108,17 @@ struct Arrangement {
   std::vector<int> next;      // per half-edge: the next one around its face
   std::vector<int> cycle_of;  // per half-edge
   std::vector<ArrangementCycle> cycles;
+  std::vector<int> cycle_half_edges;
   std::vector<ArrangementFace> faces;  // faces[0] is the unbounded face
+  std::vector<int> face_cycle_list;
+  std::span<const int> half_edges(int cycle) const {
+    const ArrangementCycle& c = cycles[cycle];
+    return {cycle_half_edges.data() + c.first, size_t(c.count)};
+  }
+  std::span<const int> face_cycles(int face) const {
+    const ArrangementFace& f = faces[face];
+    return {face_cycle_list.data() + f.first, size_t(f.count)};
+  }
 
   int origin(int h) const { return h % 2 == 0 ? edges[h / 2].u : edges[h / 2].v; }
   int target(int h) const { return h % 2 == 0 ? edges[h / 2].v : edges[h / 2].u; }
@@ -115,9 +129,25 @@ struct Arrangement {
   static bool left_is_blocked(int h, const EdgeLabel& l) { return (h % 2 == 0) == l.blocked_left; }
 };
 
-// Builds the arrangement of `curves` (each oriented with its blocked side on the left);
-// label ids are the curves' indices in `segment_ids`.
-Arrangement build_arrangement(const std::vector<Curve>& curves, const std::vector<int>& segment_ids,
-                              const Tolerances& tol);
+// Builds arrangements one after another in the same buffers (its own and the arrangement's):
+// a slice of a small pair makes a few dozen edges, and allocating every working array per
+// slice cost more than the geometry. Not thread-safe: one per thread.
+class ArrangementBuilder {
+ public:
+  ArrangementBuilder();
+  ~ArrangementBuilder();
+  ArrangementBuilder(ArrangementBuilder&&) noexcept;
+  ArrangementBuilder& operator=(ArrangementBuilder&&) noexcept;
+  // The arrangement of `curves` (each oriented with its blocked side on the left); label ids
+  // are the curves' indices in `segment_ids`. Valid until the next build.
+  const Arrangement& build(const std::vector<Curve>& curves, const std::vector<int>& segment_ids,
+                           const Tolerances& tol);
+
+  struct Scratch;  // arrangement.cpp
+
+ private:
+  std::unique_ptr<Scratch> scratch_;
+  Arrangement arr_;
+};
 
 }  // namespace cslice

@@ -26,25 +26,26 @@ void scan_crossings(const Curve& c, double y, std::vector<double>& xs) {
 
 }  // namespace
 
-Vec2 face_sample(const Arrangement& arr, int face, const Tolerances& tol) {
-  std::vector<Curve> curves;
+Vec2 face_sample(const Arrangement& arr, int face, const Tolerances& tol,
+                 FaceSampleScratch& scratch) {
   Box box;
-  for (int c : arr.faces[face].cycles) {
-    box.add(arr.cycles[c].box);
-    for (int h : arr.cycles[c].half_edges) curves.push_back(arr.half_curve(h));
-  }
+  for (int c : arr.face_cycles(face)) box.add(arr.cycles[c].box);
   if (!arr.faces[face].bounded) {
     if (box.empty()) return {0.0, 0.0};
     const double reach = std::max(box.diagonal(), tol.size);
     return {box.hi.x + reach, 0.5 * (box.lo.y + box.hi.y)};
   }
+  std::vector<Curve>& curves = scratch.curves;
+  curves.clear();
+  for (int c : arr.face_cycles(face))
+    for (int h : arr.half_edges(c)) curves.push_back(arr.half_curve(h));
   // Scan lines at irrational fractions of the height, so they avoid vertices of designed
   // (round-numbered) input.
   constexpr int kLines = 7;
   constexpr double kGolden = 0.6180339887498949;
   Vec2 best = 0.5 * (box.lo + box.hi);
   double best_clearance = -1.0;
-  std::vector<double> xs;
+  std::vector<double>& xs = scratch.xs;
   for (int k = 0; k < kLines; ++k) {
     const double frac = std::fmod(0.5 + k * kGolden, 1.0);
     const double y = box.lo.y + frac * (box.hi.y - box.lo.y);

@@ -1,14 +1,23 @@
 // A point strictly inside a face of an arrangement, far from its boundary.
 #pragma once
 
+#include <vector>
+
 #include "cslice/tolerance.hpp"
 #include "slice/arrangement.hpp"
 
 namespace cslice {
 
+// Buffers of face_sample, kept between calls.
+struct FaceSampleScratch {
+  std::vector<Curve> curves;
+  std::vector<double> xs;
+};
+
 // For a bounded face: the midpoint of the widest inside interval on each of a few scan
 // lines, keeping the one farthest from the boundary. For the unbounded face: a point beyond
 // every cycle.
-Vec2 face_sample(const Arrangement& arr, int face, const Tolerances& tol);
+Vec2 face_sample(const Arrangement& arr, int face, const Tolerances& tol,
+                 FaceSampleScratch& scratch);
 
 }  // namespace cslice

@@ -21,24 +21,47 @@
 namespace cslice {
 namespace {
 
+// Buffers of one slice's construction, kept by the Slicer between slices.
+struct SliceScratch {
+  ArrangementBuilder arrangements;
+  std::vector<Curve> curves;
+  std::vector<int> ids, nodes, vertex_ids;
+  std::vector<char> blocked, realizable;
+  std::vector<Vec2> samples, dir;
+  std::vector<char> explained;
+  FaceSampleScratch face_sample;
+  size_t segments_hint = 0;  // contact segments of the last slice: the next has about as many
+};
+
 class SliceBuilder {
  public:
   SliceBuilder(const Pair& pair, ContactMaker& contacts, std::optional<PlacementTester>& tester,
-               double theta)
-      : pair_(pair), contacts_(contacts), tester_(tester), theta_(theta) {}
+               SliceScratch& scratch, double theta)
+      : pair_(pair),
+        contacts_(contacts),
+        tester_(tester),
+        theta_(theta),
+        blocked_(scratch.blocked),
+        samples_(scratch.samples),
+        realizable_(scratch.realizable),
+        scratch_(scratch) {}
 
   Slice build() {
     slice_.theta = theta_;
     slice_.epsilon = pair_.tol.geometric;
+    slice_.contact_segments.reserve(scratch_.segments_hint);
     contacts_.segments(theta_, slice_.contact_segments);
-    std::vector<Curve> curves;
-    std::vector<int> ids;
+    scratch_.segments_hint = slice_.contact_segments.size();
+    std::vector<Curve>& curves = scratch_.curves;
+    std::vector<int>& ids = scratch_.ids;
+    curves.clear();
+    ids.clear();
     for (const ContactSegment& s : slice_.contact_segments) {
       if (s.is_point) continue;
       curves.push_back(s.curve);
       ids.push_back(s.id);
     }
-    arr_ = build_arrangement(curves, ids, pair_.tol);
+    arr_ = &scratch_.arrangements.build(curves, ids, pair_.tol);
     label_faces();
     find_realizable_edges();
     find_degenerate_vertices();
@@ -56,18 +79,18 @@ class SliceBuilder {
   }
 
   void label_faces() {
-    blocked_.assign(arr_.faces.size(), false);
-    samples_.assign(arr_.faces.size(), Vec2{});
-    for (size_t f = 0; f < arr_.faces.size(); ++f) {
-      for (int c : arr_.faces[f].cycles)
-        for (int h : arr_.cycles[c].half_edges)
+    blocked_.assign(arr_->faces.size(), false);
+    samples_.assign(arr_->faces.size(), Vec2{});
+    for (size_t f = 0; f < arr_->faces.size(); ++f) {
+      for (int c : arr_->face_cycles(int(f)))
+        for (int h : arr_->half_edges(c))
           if (labels_block_left_only(h)) blocked_[f] = true;
       if (blocked_[f]) continue;
-      samples_[f] = face_sample(arr_, int(f), pair_.tol);
+      samples_[f] = face_sample(*arr_, int(f), pair_.tol, scratch_.face_sample);
       // Blocked space lies inside the box of all contact segments, and the unbounded face's
       // sample lies beyond it: there the parts are apart, inside an enclosure's material when
       // the fixed part is one. Only an empty arrangement needs the direct test.
-      if (!arr_.faces[f].bounded && !arr_.edges.empty())
+      if (!arr_->faces[f].bounded && !arr_->edges.empty())
         blocked_[f] = pair_.fixed.enclosure;
       else
         blocked_[f] = blocked_at(samples_[f]);
@@ -83,16 +106,16 @@ class SliceBuilder {
   // are settled by their other edges or by the direct test.
   bool labels_block_left_only(int h) const {
     bool left = false, right = false;
-    for (const EdgeLabel& l : arr_.edges[h / 2].labels)
+    for (const EdgeLabel& l : arr_->edges[h / 2].labels)
       (Arrangement::left_is_blocked(h, l) ? left : right) = true;
     return left && !right;
   }
 
   void find_realizable_edges() {
-    realizable_.assign(arr_.edges.size(), false);
-    for (size_t e = 0; e < arr_.edges.size(); ++e) {
-      const ArrangementEdge& edge = arr_.edges[e];
-      if (!blocked_[arr_.face_of(int(2 * e))] || !blocked_[arr_.face_of(int(2 * e + 1))]) {
+    realizable_.assign(arr_->edges.size(), false);
+    for (size_t e = 0; e < arr_->edges.size(); ++e) {
+      const ArrangementEdge& edge = arr_->edges[e];
+      if (!blocked_[arr_->face_of(int(2 * e))] || !blocked_[arr_->face_of(int(2 * e + 1))]) {
         realizable_[e] = true;
         continue;
       }
@@ -109,7 +132,7 @@ class SliceBuilder {
 
   std::vector<int> label_ids(int e) const {
     std::vector<int> ids;
-    for (const EdgeLabel& l : arr_.edges[e].labels) ids.push_back(l.segment);
+    for (const EdgeLabel& l : arr_->edges[e].labels) ids.push_back(l.segment);
     std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
     return ids;
@@ -123,12 +146,12 @@ class SliceBuilder {
   // their blocked sides on one side (one contact curve continuing through v, possibly as
   // two segments meeting end to end) block the whole half plane on that side.
   bool sectors_explained_locally(int v) {
-    const std::span<const int> out = arr_.outgoing(int(v));
+    const std::span<const int> out = arr_->outgoing(int(v));
     const int d = int(out.size());
-    std::vector<Vec2>& dir = scratch_dir_;  // reused: called for most vertices of big slices
+    std::vector<Vec2>& dir = scratch_.dir;  // reused: called for most vertices of big slices
     dir.resize(d);
-    for (int i = 0; i < d; ++i) dir[i] = arr_.direction(out[i]);
-    std::vector<char>& explained = scratch_explained_;
+    for (int i = 0; i < d; ++i) dir[i] = arr_->direction(out[i]);
+    std::vector<char>& explained = scratch_.explained;
     explained.assign(d, false);
     for (int i = 0; i < d; ++i) {
       const int next = (i + 1) % d;
@@ -150,26 +173,26 @@ class SliceBuilder {
   }
 
   bool has_label_blocking(int h, bool left) const {
-    for (const EdgeLabel& l : arr_.edges[h / 2].labels)
+    for (const EdgeLabel& l : arr_->edges[h / 2].labels)
       if (Arrangement::left_is_blocked(h, l) == left) return true;
     return false;
   }
 
   void find_degenerate_vertices() {
-    for (size_t v = 0; v < arr_.vertices.size(); ++v) {
-      const std::span<const int> out = arr_.outgoing(int(v));
+    for (size_t v = 0; v < arr_->vertices.size(); ++v) {
+      const std::span<const int> out = arr_->outgoing(int(v));
       if (out.empty()) continue;
       bool all_blocked = true;
       for (int h : out)
-        all_blocked = all_blocked && blocked_[arr_.face_of(h)] && !realizable_[h / 2];
+        all_blocked = all_blocked && blocked_[arr_->face_of(h)] && !realizable_[h / 2];
       if (!all_blocked || !sectors_explained_locally(int(v))) continue;
-      if (blocked_at(arr_.vertices[v])) continue;
+      if (blocked_at(arr_->vertices[v])) continue;
       std::vector<int> ids;
       for (int h : out)
-        for (const EdgeLabel& l : arr_.edges[h / 2].labels) ids.push_back(l.segment);
+        for (const EdgeLabel& l : arr_->edges[h / 2].labels) ids.push_back(l.segment);
       std::sort(ids.begin(), ids.end());
       ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-      add_degenerate_point(arr_.vertices[v], std::move(ids));
+      add_degenerate_point(arr_->vertices[v], std::move(ids));
     }
   }
 
@@ -196,27 +219,31 @@ class SliceBuilder {
   }
 
   ContactPiece piece_of_half_edge(int h) const {
-    int lowest = arr_.edges[h / 2].labels.front().segment;
-    for (const EdgeLabel& l : arr_.edges[h / 2].labels) lowest = std::min(lowest, l.segment);
-    return {lowest, arr_.half_curve(h)};
+    int lowest = arr_->edges[h / 2].labels.front().segment;
+    for (const EdgeLabel& l : arr_->edges[h / 2].labels) lowest = std::min(lowest, l.segment);
+    return {lowest, arr_->half_curve(h)};
   }
 
   void collect_components() {
-    for (size_t e = 0; e < arr_.edges.size(); ++e)
+    // Sized once: growing them piece by piece cost several allocations per slice.
+    slice_.realizable.reserve(std::count(realizable_.begin(), realizable_.end(), true));
+    for (size_t e = 0; e < arr_->edges.size(); ++e)
       if (realizable_[e]) slice_.realizable.push_back(piece_of_half_edge(int(2 * e)));
-    for (size_t f = 0; f < arr_.faces.size(); ++f) {
+    slice_.free_components.reserve(std::count(blocked_.begin(), blocked_.end(), false));
+    for (size_t f = 0; f < arr_->faces.size(); ++f) {
       if (blocked_[f]) {
         slice_.blocked_area += face_area(int(f));
         continue;
       }
       FreeComponent comp;
       comp.id = int(slice_.free_components.size());
-      comp.bounded = arr_.faces[f].bounded;
+      comp.bounded = arr_->faces[f].bounded;
       comp.sample = samples_[f];
-      for (int c : arr_.faces[f].cycles) {
-        std::vector<ContactPiece> cycle;
-        for (int h : arr_.cycles[c].half_edges) cycle.push_back(piece_of_half_edge(h));
-        comp.boundary.push_back(std::move(cycle));
+      comp.boundary.reserve(arr_->faces[f].count);
+      for (int c : arr_->face_cycles(int(f))) {
+        std::vector<ContactPiece>& cycle = comp.boundary.emplace_back();
+        cycle.reserve(arr_->cycles[c].count);
+        for (int h : arr_->half_edges(c)) cycle.push_back(piece_of_half_edge(h));
       }
       comp.area = face_area(int(f));
       slice_.free_components.push_back(std::move(comp));
@@ -226,31 +253,33 @@ class SliceBuilder {
   // Outer cycle plus (negative) hole cycles; NaN for the unbounded face when free, infinity
   // when blocked.
   double face_area(int f) const {
-    if (!arr_.faces[f].bounded)
+    if (!arr_->faces[f].bounded)
       return blocked_[f] ? std::numeric_limits<double>::infinity()
                          : std::numeric_limits<double>::quiet_NaN();
     double area = 0.0;
-    for (int c : arr_.faces[f].cycles) area += arr_.cycles[c].area;
+    for (int c : arr_->face_cycles(f)) area += arr_->cycles[c].area;
     return area;
   }
 
   void build_contact_graph() {
-    std::vector<int> nodes, ids;
+    std::vector<int>& nodes = scratch_.nodes;  // copied out once complete
+    std::vector<int>& ids = scratch_.vertex_ids;
+    nodes.clear();
     auto add_meetings = [&](const std::vector<int>& at_ids, Vec2 at) {
       for (size_t i = 0; i < at_ids.size(); ++i)
         for (size_t j = i + 1; j < at_ids.size(); ++j)
           slice_.contact_graph.edges.push_back({at_ids[i], at_ids[j], at});
     };
-    for (size_t v = 0; v < arr_.vertices.size(); ++v) {
+    for (size_t v = 0; v < arr_->vertices.size(); ++v) {
       ids.clear();
-      for (int h : arr_.outgoing(int(v)))
+      for (int h : arr_->outgoing(int(v)))
         if (realizable_[h / 2])
-          for (const EdgeLabel& l : arr_.edges[h / 2].labels) ids.push_back(l.segment);
+          for (const EdgeLabel& l : arr_->edges[h / 2].labels) ids.push_back(l.segment);
       if (ids.empty()) continue;
       std::sort(ids.begin(), ids.end());
       ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
       nodes.insert(nodes.end(), ids.begin(), ids.end());
-      add_meetings(ids, arr_.vertices[v]);
+      add_meetings(ids, arr_->vertices[v]);
     }
     for (const DegenerateContact& d : slice_.degenerate) {
       nodes.insert(nodes.end(), d.segments.begin(), d.segments.end());
@@ -258,7 +287,7 @@ class SliceBuilder {
     }
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    slice_.contact_graph.nodes = std::move(nodes);
+    slice_.contact_graph.nodes.assign(nodes.begin(), nodes.end());
   }
 
   const Pair& pair_;
@@ -266,12 +295,11 @@ class SliceBuilder {
   std::optional<PlacementTester>& tester_;
   double theta_;
   Slice slice_;
-  Arrangement arr_;
-  std::vector<char> blocked_;
-  std::vector<Vec2> samples_;
-  std::vector<char> realizable_;
-  std::vector<Vec2> scratch_dir_;
-  std::vector<char> scratch_explained_;
+  const Arrangement* arr_ = nullptr;
+  std::vector<char>& blocked_;     // per face
+  std::vector<Vec2>& samples_;     // per face
+  std::vector<char>& realizable_;  // per edge
+  SliceScratch& scratch_;
 };
 
 }  // namespace
@@ -306,6 +334,7 @@ struct Slicer::State {
   const Pair& pair;
   ContactMaker contacts;
   std::optional<PlacementTester> tester;
+  SliceScratch scratch;
 };
 
 Slicer::Slicer(const Pair& pair) : state_(std::make_unique<State>(pair)) {}
@@ -314,7 +343,8 @@ Slicer::Slicer(Slicer&&) noexcept = default;
 Slicer& Slicer::operator=(Slicer&&) noexcept = default;
 
 Slice Slicer::slice(double theta) {
-  return SliceBuilder(state_->pair, state_->contacts, state_->tester, theta).build();
+  State& s = *state_;
+  return SliceBuilder(s.pair, s.contacts, s.tester, s.scratch, theta).build();
 }
 
 Slice compute_slice(const Pair& pair, double theta) {
