@@ -1,7 +1,9 @@
 // The slice against the direct placement test and against closed-form answers.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
+#include <numeric>
 #include <random>
 #include <sstream>
 
@@ -9,6 +11,7 @@
 #include "cslice/classify.hpp"
 #include "cslice/slice.hpp"
 #include "cslice/slice_io.hpp"
+#include "slice/close_points.hpp"
 #include "support/examples.hpp"
 #include "support/random_parts.hpp"
 #include "support/random_polygons.hpp"
@@ -379,5 +382,43 @@ TEST(SliceReuse, OneSlicerGivesTheSlicesOfFreshOnes) {
                 slice_to_json(pair, compute_slice(pair, theta)))
           << "theta " << theta;
     }
+  }
+}
+
+// ---- Clustering close points (the arrangement's vertices) --------------------------------
+
+// The cell method against every pair, on dense random clusters (hundreds of points within eps,
+// as at a perfect fit), points exactly eps apart, and scattered points: the same clusters.
+TEST(ClosePoints, CellsUniteExactlyThePairsWithinEps) {
+  std::mt19937 rng(99);
+  const double eps = 1e-3;
+  for (int round = 0; round < 40; ++round) {
+    std::uniform_real_distribution<double> centre(-5.0, 5.0), jitter(-eps, eps);
+    std::vector<Vec2> points;
+    const int clusters = 1 + round % 7;
+    for (int c = 0; c < clusters; ++c) {
+      const Vec2 at{centre(rng), round % 2 ? 0.25 : centre(rng)};  // odd rounds: one row
+      const int size = 1 + static_cast<int>(rng() % 300);
+      for (int i = 0; i < size; ++i)
+        points.push_back({at.x + jitter(rng) * (round % 3), at.y + jitter(rng) * (round % 3)});
+      points.push_back({at.x + eps, at.y});  // exactly eps from the centre
+      points.push_back({at.x, at.y - eps});
+      points.push_back(at);
+    }
+    std::shuffle(points.begin(), points.end(), rng);
+    const int n = static_cast<int>(points.size());
+    std::vector<int> id(n);
+    std::iota(id.begin(), id.end(), 0);
+    UnionFind by_cells, by_pairs;
+    by_cells.reset(n);
+    by_pairs.reset(n);
+    std::vector<int> scratch;
+    unite_close_by_cells(points, id, eps, by_cells, scratch);
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j)
+        if (distance(points[i], points[j]) <= eps) by_pairs.unite(i, j);
+    int differ = 0;
+    for (int i = 0; i < n; ++i) differ += by_cells.find(i) != by_pairs.find(i);
+    EXPECT_EQ(differ, 0) << "round " << round << ", " << n << " points";
   }
 }

@@ -15,6 +15,7 @@
 #include <numeric>
 
 #include "parts/loop_queries.hpp"
+#include "slice/close_points.hpp"
 #include "slice/split_points.hpp"
 
 namespace cslice {
@@ -28,27 +29,6 @@ struct Meetings {
   std::vector<MeetingKey> tangents, crossings;  // sorted
 };
 
-// Union-find over 0 .. n - 1, reset in place so its array serves many arrangements.
-class UnionFind {
- public:
-  void reset(size_t n) {
-    parent_.resize(n);
-    std::iota(parent_.begin(), parent_.end(), 0);
-  }
-  int find(int a) {
-    while (parent_[a] != a) a = parent_[a] = parent_[parent_[a]];
-    return a;
-  }
-  void unite(int a, int b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);  // the lowest index represents
-  }
-
- private:
-  std::vector<int> parent_;
-};
-
 }  // namespace
 
 // Every working array of ArrangementBuilder::build, kept between builds.
@@ -59,6 +39,7 @@ struct ArrangementBuilder::Scratch {
   std::vector<uint64_t> keys;
   std::vector<int> next, count;
   std::vector<Vec2> points_by_x;
+  std::vector<int> by_cell;  // merge_points past its budget
   std::vector<int> order, vertex_of, vertex_of_root, fill;
   UnionFind uf;
   std::vector<int> start, along;
@@ -137,28 +118,34 @@ void sorted_by_x(size_t n, X x, Scratch& s) {
 }
 
 // Merges split points closer than eps (transitively) into vertices; fills the vertex of each
-// split point (s.vertex_of) and the vertex positions (each the first point of its cluster).
-// A sweep in x compares each point with the following ones less than eps further right.
+// split point (s.vertex_of) and the vertex positions (each the first point of its cluster:
+// the union-find keeps the lowest index as root, so the clusters and their vertices depend
+// only on which pairs are within eps, not on the order they are found in). A sweep in x
+// compares each point with the following ones less than eps further right; where many points
+// share an x-window (a perfect fit where many contact segments meet) that turns quadratic,
+// and past a budget the cells above take over.
 void merge_points(Scratch& s, double eps, std::vector<Vec2>& vertices) {
   const std::vector<SplitPoint>& splits = s.splits;
   std::vector<int>& order = s.order;
   sorted_by_x(
       splits.size(), [&](size_t i) { return splits[i].p.x; }, s);
-  // The points in x order, contiguous: a cluster of many points within eps in x (a perfect
-  // fit where many contact segments meet) makes the sweep quadratic in its size.
   const size_t n = splits.size();
   std::vector<Vec2>& points = s.points_by_x;
   points.resize(n);
   for (size_t i = 0; i < n; ++i) points[i] = splits[order[i]].p;
   UnionFind& uf = s.uf;
   uf.reset(n);
-  for (size_t i = 0; i < n; ++i) {
+  const size_t budget = 16 * n + 256;
+  size_t work = 0;
+  for (size_t i = 0; i < n && work <= budget; ++i) {
     const Vec2 p = points[i];
     for (size_t j = i + 1; j < n && points[j].x - p.x <= eps; ++j) {
+      ++work;
       const Vec2 q = points[j];
       if (std::fabs(q.y - p.y) <= eps && distance(p, q) <= eps) uf.unite(order[i], order[j]);
     }
   }
+  if (work > budget) unite_close_by_cells(points, order, eps, uf, s.by_cell);
   s.vertex_of.resize(splits.size());
   s.vertex_of_root.assign(splits.size(), -1);
   for (size_t i = 0; i < splits.size(); ++i) {
