@@ -17,6 +17,7 @@
 
 #include "cslice/equivalence.hpp"
 #include "cslice/space.hpp"
+#include "geometry/union_find.hpp"
 #include "space/space_build.hpp"
 
 namespace cslice {
@@ -28,24 +29,6 @@ constexpr size_t kMaxProblems = 20;  // problems kept in words; the counts keep 
 // match: 4 shrinks the gap 16 times (the paper examples need at most 1); beyond that the
 // boundary labels decide (match_by_labels).
 constexpr int kMaxRefinement = 4;
-
-// Union-find whose root is always the smallest member, so results do not depend on the order
-// of the unions.
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(int a, int b) {
-    a = find(a);
-    b = find(b);
-    if (a == b) return;
-    if (a < b) std::swap(a, b);
-    parent[a] = b;
-  }
-};
 
 // Angle from `start` forward to `theta`, in [0, 2 pi).
 double offset_from(double start, double theta) {
@@ -346,9 +329,8 @@ class TopologyBuilder {
     if (!refiner_) refiner_.emplace(pair_);
     refined_.push_back(refiner_->slice(theta));
     topo_.checks.refinement_slices += 1;
-    const Link link{&refined_.back(), -1, static_cast<int>(nodes_.parent.size())};
-    for (int c = 0; c < component_count(refined_.back()); ++c)
-      nodes_.parent.push_back(static_cast<int>(nodes_.parent.size()));
+    const Link link{&refined_.back(), -1, static_cast<int>(nodes_.size())};
+    for (int c = 0; c < component_count(refined_.back()); ++c) nodes_.add();
     refined_links_[interval].push_back(link);
     return link;
   }
@@ -357,7 +339,7 @@ class TopologyBuilder {
   // then by component of the representative slice, then by first appearance along the chain.
   void build_cells() {
     const int n = static_cast<int>(starts_.size());
-    node_cell_.assign(nodes_.parent.size(), -1);
+    node_cell_.assign(nodes_.size(), -1);
     topo_.slice_cells.assign(space_.slices.size(), {});
     for (int i = 0; i < n; ++i) {
       std::vector<int> order;  // chain positions: the representative first
@@ -369,7 +351,7 @@ class TopologyBuilder {
       std::vector<Link> links;  // the chain, nearest the middle first, then refinements
       for (int j : order) links.push_back(chains_[i][j]);
       links.insert(links.end(), refined_links_[i].begin(), refined_links_[i].end());
-      std::vector<int> root_cell(nodes_.parent.size(), -1);
+      std::vector<int> root_cell(nodes_.size(), -1);
       for (const Link& link : links) {
         for (int c = 0; c < component_count(*link.slice); ++c) {
           const int root = nodes_.find(link.first_node + c);
@@ -631,7 +613,7 @@ class TopologyBuilder {
   std::deque<Slice> refined_;      // extra slices halving unmatched gaps (stable addresses)
   std::optional<Slicer> refiner_;  // computes them, built on first use
   std::vector<std::vector<Link>> refined_links_;  // per interval
-  UnionFind nodes_{0};
+  UnionFind nodes_;
   std::vector<int> node_cell_;
   std::vector<std::vector<int>> critical_event_;  // per critical slice component: a cell
   SpaceTopology topo_;
