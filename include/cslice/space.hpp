@@ -129,8 +129,9 @@ struct TopologyChecks {
   // Not a failure: critical orientations with at most one free component in the intervals on
   // either side, whose joins follow from the counts (no side slices; see compute_topology).
   int joins_by_count = 0;
-  // Not a failure: critical orientations joined through the intervals' nearest stored slices,
-  // every sample's clearance proving its vertical segment free (no side slices).
+  // Not a failure: sides of critical orientations (up to two each) where the interval's
+  // nearest stored slice stands in for a side slice, every sample's clearance proving its
+  // vertical segment free.
   int joins_by_clearance = 0;
   std::vector<std::string> problems;  // the first few, in words
 };

@@ -108,8 +108,7 @@ class TopologyBuilder {
     side_angles_.assign(2 * n, 0.0);
     has_side_.assign(2 * n, 0);
     by_count_.assign(n, 0);
-    certified_.assign(n, 0);
-    certified_unions_.assign(n, {});
+    far_.assign(2 * n, 0);
     for (int k = 0; k < n; ++k) {
       const int before = (k + n - 1) % n;
       const double gap_before =
@@ -118,11 +117,12 @@ class TopologyBuilder {
       side_angles_[2 * k] = std::min(gap_before, delta);
       side_angles_[2 * k + 1] = std::min(gap_after, delta);
       by_count_[k] = !options_.verify_joins && joins_follow_from_counts(before, k);
-      const bool need_sides = (gap_before > delta || gap_after > delta) && !by_count_[k];
-      certified_[k] = need_sides && !options_.verify_joins &&
-                      certify_joins(k, gap_before, gap_after, certified_unions_[k]);
-      has_side_[2 * k] = gap_before > delta && !by_count_[k] && !certified_[k];
-      has_side_[2 * k + 1] = gap_after > delta && !by_count_[k] && !certified_[k];
+      const int n_before = stored_[before].back(), n_after = stored_[k].front();
+      const bool certify = !by_count_[k] && !options_.verify_joins;
+      far_[2 * k] = certify && gap_before > delta && clears(n_before, k, gap_before);
+      far_[2 * k + 1] = certify && gap_after > delta && clears(n_after, k, gap_after);
+      has_side_[2 * k] = gap_before > delta && !by_count_[k] && !far_[2 * k];
+      has_side_[2 * k + 1] = gap_after > delta && !by_count_[k] && !far_[2 * k + 1];
       thetas[2 * k] = wrap_angle(criticals_[k] - delta);
       thetas[2 * k + 1] = wrap_angle(criticals_[k] + delta);
     }
@@ -133,53 +133,26 @@ class TopologyBuilder {
                                     });
   }
 
-  // The sample rules of `transition` applied to the interval's nearest stored slices instead
-  // of side slices, where each sample's clearance proves the vertical segment it stands for
-  // free. Turning the moving part by dtheta moves none of its points further than
-  // reach * |dtheta| (moving_reach), so a configuration (p, theta) whose distance d from
-  // blocked space exceeds reach * |theta' - theta| stays free up to theta'. A sample of a free
-  // component lies at least its distance to the component's boundary from blocked space. So
-  // a sample is carried to theta_k (and across it) only when that clearance, less the
-  // geometric epsilon, exceeds reach times the turn; where one is not, or a carried sample is
-  // not found in a component where it must be free, false: the side slices decide.
-  bool certify_joins(int k, double gap_before, double gap_after,
-                     std::vector<std::pair<int, int>>& unions) const {
-    const int n = static_cast<int>(criticals_.size());
-    const Slice& sb = space_.slices[stored_[(k + n - 1) % n].back()].slice;
-    const Slice& sa = space_.slices[stored_[k].front()].slice;
+  // Whether stored slice `stored`, `gap` from critical orientation k, can stand in for a side
+  // slice in the sample rules of `transition`: every sample of it and of the critical slice
+  // must be proved to stand for a free vertical segment between the two. Turning the moving
+  // part by dtheta moves none of its points further than reach * |dtheta| (moving_reach), so
+  // a configuration whose distance from blocked space exceeds reach * |theta' - theta| stays
+  // free up to theta'; a sample of a free component lies at least its distance to the
+  // component's boundary from blocked space. So each sample's clearance less the geometric
+  // epsilon must exceed reach * gap, and a sample so proved free must be found in a component
+  // of the other slice (or the numbers disagree, and a side slice decides).
+  bool clears(int stored, int k, double gap) const {
+    const Slice& s = space_.slices[stored].slice;
     const Slice& sc = space_.slices[critical_slice_[k]].slice;
-    const int nb = component_count(sb), na = component_count(sa);
-    const int B0 = nb, C0 = nb + na;
-    const auto free_over = [&](const Slice& s, int c, double turn) {
-      return sample_clearance(s, c) - s.epsilon > reach_ * turn;
-    };
-    // A sample of one side slice: to theta_k, and on to the other side when it clears both.
-    const auto carry = [&](const Slice& from, int c, int id, double gap, const Slice& other,
-                           int other0, double other_gap) {
-      if (!free_over(from, c, gap)) return false;
-      const Vec2 p = from.free_components[c].sample;
-      const int at_k = sc.locate(p);
-      if (at_k < 0) return false;
-      unions.emplace_back(id, C0 + at_k);
-      if (!free_over(from, c, gap + other_gap)) return true;
-      const int there = other.locate(p);
-      if (there < 0) return false;
-      unions.emplace_back(id, other0 + there);
+    const auto carried = [&](const Slice& from, const Slice& to) {
+      for (int c = 0; c < component_count(from); ++c)
+        if (sample_clearance(from, c) - from.epsilon <= reach_ * gap ||
+            to.locate(from.free_components[c].sample) < 0)
+          return false;
       return true;
     };
-    for (int a = 0; a < nb; ++a)
-      if (!carry(sb, a, a, gap_before, sa, B0, gap_after)) return false;
-    for (int b = 0; b < na; ++b)
-      if (!carry(sa, b, B0 + b, gap_after, sb, 0, gap_before)) return false;
-    for (int c = 0; c < component_count(sc); ++c) {
-      if (!free_over(sc, c, std::max(gap_before, gap_after))) return false;
-      const Vec2 p = sc.free_components[c].sample;
-      const int a = sb.locate(p), b = sa.locate(p);
-      if (a < 0 || b < 0) return false;
-      unions.emplace_back(C0 + c, a);
-      unions.emplace_back(C0 + c, B0 + b);
-    }
-    return true;
+    return carried(s, sc) && carried(sc, s);
   }
 
   // How far a component's sample lies from its boundary; infinite with no boundary.
@@ -224,7 +197,7 @@ class TopologyBuilder {
     topo_.checks.joins_by_count =
         static_cast<int>(std::count(by_count_.begin(), by_count_.end(), char{1}));
     topo_.checks.joins_by_clearance =
-        static_cast<int>(std::count(certified_.begin(), certified_.end(), char{1}));
+        static_cast<int>(std::count(far_.begin(), far_.end(), char{1}));
     nodes_ = UnionFind(nodes);
     refined_links_.assign(n, {});
     for (int i = 0; i < n; ++i) {
@@ -426,10 +399,8 @@ class TopologyBuilder {
       // At most one component on each side (joins_follow_from_counts).
       for (int x = 1; x < nb + na + nc; ++x)
         if (nc > 0) local.unite(0, x);
-    } else if (certified_[k]) {
-      for (const auto& [x, y] : certified_unions_[k]) local.unite(x, y);
     } else {
-      join_by_samples(sb, sa, sc, local);
+      join_by_samples(sb, sa, sc, far_[2 * k], far_[2 * k + 1], local);
     }
     // Components of one cell are one (they differ only after a reported match failure).
     for (int x = 0; x < nb; ++x)
@@ -496,19 +467,22 @@ class TopologyBuilder {
     topo_.transitions.push_back(std::move(t));
   }
 
-  // The sample rules of `transition`, with components numbered as there.
-  static void join_by_samples(const Slice& sb, const Slice& sa, const Slice& sc, UnionFind& local) {
+  // The sample rules of `transition`, with components numbered as there. A far side is a
+  // stored slice that `clears` proved for its own samples and the critical slice's: a sample
+  // of the other side is not looked up in it (nothing proves its segment reaches that far).
+  static void join_by_samples(const Slice& sb, const Slice& sa, const Slice& sc, bool far_before,
+                              bool far_after, UnionFind& local) {
     const int nb = component_count(sb), na = component_count(sa);
     const int B0 = nb, C0 = nb + na;
     for (int a = 0; a < nb; ++a) {
       const Vec2 p = sb.free_components[a].sample;
-      const int c = sc.locate(p), b = sa.locate(p);
+      const int c = sc.locate(p), b = far_after ? -1 : sa.locate(p);
       if (c >= 0) local.unite(a, C0 + c);
       if (c >= 0 && b >= 0) local.unite(a, B0 + b);
     }
     for (int b = 0; b < na; ++b) {
       const Vec2 p = sa.free_components[b].sample;
-      const int c = sc.locate(p), a = sb.locate(p);
+      const int c = sc.locate(p), a = far_before ? -1 : sb.locate(p);
       if (c >= 0) local.unite(B0 + b, C0 + c);
       if (c >= 0 && a >= 0) local.unite(B0 + b, a);
     }
@@ -601,10 +575,9 @@ class TopologyBuilder {
   const SlicedSpace& space_;
   TopologyOptions options_;
   std::vector<double> criticals_, starts_, ends_, side_angles_;
-  std::vector<char> has_side_;   // 2k: an extra slice before critical k; 2k + 1: after it
-  std::vector<char> by_count_;   // per critical: joined by joins_follow_from_counts
-  std::vector<char> certified_;  // per critical: joined by certify_joins, with
-  std::vector<std::vector<std::pair<int, int>>> certified_unions_;  // these unions
+  std::vector<char> has_side_;  // 2k: an extra slice before critical k; 2k + 1: after it
+  std::vector<char> by_count_;  // per critical: joined by joins_follow_from_counts
+  std::vector<char> far_;       // 2k, 2k + 1: that side's stored slice stands in (clears)
   double reach_ = moving_reach(pair_.moving);
   std::vector<std::vector<int>> stored_;  // per interval: its non-critical slices, by theta
   std::vector<int> critical_slice_, representative_;
