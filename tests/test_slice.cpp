@@ -409,10 +409,8 @@ TEST(ClosePoints, CellsUniteExactlyThePairsWithinEps) {
     const int n = static_cast<int>(points.size());
     std::vector<int> id(n);
     std::iota(id.begin(), id.end(), 0);
-    UnionFind by_cells, by_pairs;
-    by_cells.reset(n);
-    by_pairs.reset(n);
-    std::vector<int> scratch;
+    UnionFind by_cells(n), by_pairs(n);
+    CellScratch scratch;
     unite_close_by_cells(points, id, eps, by_cells, scratch);
     for (int i = 0; i < n; ++i)
       for (int j = i + 1; j < n; ++j)

@@ -39,7 +39,7 @@ struct ArrangementBuilder::Scratch {
   std::vector<uint64_t> keys;
   std::vector<int> next, count;
   std::vector<Vec2> points_by_x;
-  std::vector<int> by_cell;  // merge_points past its budget
+  CellScratch by_cell;  // merge_points past its budget
   std::vector<int> order, vertex_of, vertex_of_root, fill;
   UnionFind uf;
   std::vector<int> start, along;

@@ -13,28 +13,29 @@ namespace cslice {
 // coincident points (a perfect fit where many contact segments meet) costs about its size,
 // not its square.
 void unite_close_by_cells(const std::vector<Vec2>& points, const std::vector<int>& id, double eps,
-                          UnionFind& uf, std::vector<int>& by_cell) {
-  using Cell = std::pair<long long, long long>;
+                          UnionFind& uf, CellScratch& scratch) {
+  using Cell = CellScratch::Cell;
   const double h = eps / 2;
-  const auto cell = [&](int i) -> Cell {
-    return {static_cast<long long>(std::floor(points[i].x / h)),
-            static_cast<long long>(std::floor(points[i].y / h))};
-  };
-  by_cell.resize(points.size());
-  std::iota(by_cell.begin(), by_cell.end(), 0);
-  std::sort(by_cell.begin(), by_cell.end(), [&](int a, int b) { return cell(a) < cell(b); });
-  std::vector<Cell> cells;
-  std::vector<size_t> first;  // cells[k] holds by_cell[first[k] .. first[k + 1])
+  auto& [by_cell, cells, first] = scratch;
+  by_cell.clear();
+  for (size_t i = 0; i < points.size(); ++i)
+    by_cell.push_back({{static_cast<long long>(std::floor(points[i].x / h)),
+                        static_cast<long long>(std::floor(points[i].y / h))},
+                       static_cast<int>(i)});
+  std::sort(by_cell.begin(), by_cell.end());
+  cells.clear();
+  first.clear();
   for (size_t i = 0; i < by_cell.size(); ++i) {
-    const Cell c = cell(by_cell[i]);
-    if (cells.empty() || cells.back() != c) {
-      cells.push_back(c);
+    if (cells.empty() || cells.back() != by_cell[i].first) {
+      cells.push_back(by_cell[i].first);
       first.push_back(i);
     } else {
-      uf.unite(id[by_cell[first.back()]], id[by_cell[i]]);
+      uf.unite(id[by_cell[first.back()].second], id[by_cell[i].second]);
     }
   }
   first.push_back(by_cell.size());
+  const auto point = [&](size_t i) { return points[by_cell[i].second]; };
+  const auto member = [&](size_t i) { return id[by_cell[i].second]; };
   for (size_t k = 0; k < cells.size(); ++k)
     for (long long dx = 0; dx <= 3; ++dx)
       for (long long dy = -3; dy <= 3; ++dy) {
@@ -43,12 +44,12 @@ void unite_close_by_cells(const std::vector<Vec2>& points, const std::vector<int
         const auto it = std::lower_bound(cells.begin(), cells.end(), other);
         if (it == cells.end() || *it != other) continue;
         const size_t m = static_cast<size_t>(it - cells.begin());
-        if (uf.find(id[by_cell[first[k]]]) == uf.find(id[by_cell[first[m]]])) continue;
+        if (uf.find(member(first[k])) == uf.find(member(first[m]))) continue;
         bool joined = false;
         for (size_t i = first[k]; i < first[k + 1] && !joined; ++i)
           for (size_t j = first[m]; j < first[m + 1] && !joined; ++j)
-            if (distance(points[by_cell[i]], points[by_cell[j]]) <= eps) {
-              uf.unite(id[by_cell[i]], id[by_cell[j]]);
+            if (distance(point(i), point(j)) <= eps) {
+              uf.unite(member(i), member(j));
               joined = true;
             }
       }

@@ -117,15 +117,18 @@ class TopologyBuilder {
       side_angles_[2 * k] = std::min(gap_before, delta);
       side_angles_[2 * k + 1] = std::min(gap_after, delta);
       by_count_[k] = !options_.verify_joins && joins_follow_from_counts(before, k);
-      const int n_before = stored_[before].back(), n_after = stored_[k].front();
       const bool certify = !by_count_[k] && !options_.verify_joins;
-      far_[2 * k] = certify && gap_before > delta && clears(n_before, k, gap_before);
-      far_[2 * k + 1] = certify && gap_after > delta && clears(n_after, k, gap_after);
+      far_[2 * k] = certify && gap_before > delta && clears(stored_[before].back(), k, gap_before);
+      far_[2 * k + 1] = certify && gap_after > delta && clears(stored_[k].front(), k, gap_after);
       has_side_[2 * k] = gap_before > delta && !by_count_[k] && !far_[2 * k];
       has_side_[2 * k + 1] = gap_after > delta && !by_count_[k] && !far_[2 * k + 1];
       thetas[2 * k] = wrap_angle(criticals_[k] - delta);
       thetas[2 * k + 1] = wrap_angle(criticals_[k] + delta);
     }
+    topo_.checks.joins_by_count =
+        static_cast<int>(std::count(by_count_.begin(), by_count_.end(), char{1}));
+    topo_.checks.joins_by_clearance =
+        static_cast<int>(std::count(far_.begin(), far_.end(), char{1}));
     sides_.resize(thetas.size());
     detail::for_each_index_parallel(pair_, thetas.size(), options_.threads,
                                     [&](size_t i, Slicer& s) {
@@ -194,10 +197,6 @@ class TopologyBuilder {
       for (int s : stored_[i]) add(i, &space_.slices[s].slice, s);
       if (crit > 0 && has_side_[2 * ((i + 1) % crit)]) add(i, &sides_[2 * ((i + 1) % crit)], -2);
     }
-    topo_.checks.joins_by_count =
-        static_cast<int>(std::count(by_count_.begin(), by_count_.end(), char{1}));
-    topo_.checks.joins_by_clearance =
-        static_cast<int>(std::count(far_.begin(), far_.end(), char{1}));
     nodes_ = UnionFind(nodes);
     refined_links_.assign(n, {});
     for (int i = 0; i < n; ++i) {
@@ -396,9 +395,10 @@ class TopologyBuilder {
     UnionFind local(nb + na + nc);
     const int B0 = nb, C0 = nb + na;
     if (by_count_[k]) {
-      // At most one component on each side (joins_follow_from_counts).
-      for (int x = 1; x < nb + na + nc; ++x)
-        if (nc > 0) local.unite(0, x);
+      // At most one component on each side (joins_follow_from_counts): with free space at
+      // theta_k, all one event; without, nothing joins.
+      if (nc > 0)
+        for (int x = 1; x < nb + na + nc; ++x) local.unite(0, x);
     } else {
       join_by_samples(sb, sa, sc, far_[2 * k], far_[2 * k + 1], local);
     }
