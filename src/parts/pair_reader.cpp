@@ -254,19 +254,6 @@ Pair read_pair(std::string_view text, std::string_view source) {
   return assemble(moving, fixed, std::move(pair));
 }
 
-// Farthest distance from the origin of any point of the curve: the endpoints, or for an arc
-// the point of its circle in the direction of the center, when the arc passes through it.
-double reach_of(const Curve& c) {
-  double r = std::max(length(c.from), length(c.to));
-  if (!c.is_arc()) return r;
-  const double d = length(c.center);
-  const bool passes = c.is_full_circle() || d == 0.0 || [&] {
-    const double t = arc_parameter_of_angle(c, std::atan2(c.center.y, c.center.x));
-    return t >= 0.0 && t <= 1.0;
-  }();
-  return passes ? std::max(r, d + c.radius) : r;
-}
-
 }  // namespace
 
 std::string InputError::message() const {
@@ -284,14 +271,10 @@ double pair_size(const Part& moving, const Part& fixed) {
   Box box;
   for (const Loop& loop : fixed.loops)
     for (const Curve& c : loop.edges) box.add(bounding_box(c));
-  double reach = 0.0;
-  bool any_moving = false;
-  for (const Loop& loop : moving.loops)
-    for (const Curve& c : loop.edges) {
-      reach = std::max(reach, reach_of(c));
-      any_moving = true;
-    }
+  const bool any_moving = std::any_of(moving.loops.begin(), moving.loops.end(),
+                                      [](const Loop& loop) { return !loop.edges.empty(); });
   if (any_moving) {
+    const double reach = moving_reach(moving);
     box.add(Vec2{-reach, -reach});
     box.add(Vec2{reach, reach});
   }
