@@ -12,6 +12,8 @@
 // another concave feature or a segment; a reflex vertex touches nothing. Segment/segment
 // contacts are subsumed by the vertex contacts at their ends (paper 6.1).
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <optional>
 
 #include "contacts/contact_features.hpp"
@@ -96,8 +98,15 @@ int intersect_intervals(const AngleInterval& a, const AngleInterval& b, double a
 
 class ContactBuilder {
  public:
-  ContactBuilder(const Pair& pair, double theta, std::vector<ContactSegment>& out)
-      : pair_(pair), rot_(Pose{0.0, 0.0, theta}), theta_(theta), out_(out) {}
+  // `fixed_normals`, when given, holds unit_vector(f.normals.lo) of every fixed feature f
+  // (indexed by f.feature): the normal of a fixed segment, the same at every orientation.
+  ContactBuilder(const Pair& pair, double theta, std::vector<ContactSegment>& out,
+                 const std::vector<Vec2>* fixed_normals = nullptr)
+      : pair_(pair),
+        rot_(Pose{0.0, 0.0, theta}),
+        theta_(theta),
+        out_(out),
+        fixed_normals_(fixed_normals) {}
 
   void add_pair(const ContactFeature& m, const ContactFeature& f) {
     if (!pair_can_touch(m, f, pair_.tol.geometric)) return;
@@ -125,7 +134,8 @@ class ContactBuilder {
   // A moving disc feature on a fixed segment: the segment shifted by rho_m n_f - R c_m.
   void add_disc_on_segment(const ContactFeature& m, const ContactFeature& f) {
     if (!interval_contains(opposed(m.normals), f.normals.lo, pair_.tol.angular)) return;
-    const Vec2 shift = m.rho * unit_vector(f.normals.lo) - rot_.rotate(m.center);
+    const Vec2 normal = fixed_normals_ ? (*fixed_normals_)[f.feature] : unit_vector(f.normals.lo);
+    const Vec2 shift = m.rho * normal - moving(m).center;
     emit(m, f, contact_kind(m, f), make_segment(f.edge.from + shift, f.edge.to + shift));
   }
 
@@ -134,9 +144,13 @@ class ContactBuilder {
   void add_segment_on_disc(const ContactFeature& m, const ContactFeature& f) {
     const double n_angle = m.normals.lo + theta_ + kPi;
     if (!interval_contains(f.normals, n_angle, pair_.tol.angular)) return;
-    const Vec2 touch = f.center + f.rho * unit_vector(n_angle);
-    emit(m, f, contact_kind(m, f),
-         make_segment(touch - rot_.rotate(m.edge.from), touch - rot_.rotate(m.edge.to)));
+    Moving& mm = moving(m);
+    if (!mm.has_normal) {
+      mm.normal = unit_vector(n_angle);  // turns with theta: once per slice and feature
+      mm.has_normal = true;
+    }
+    const Vec2 touch = f.center + f.rho * mm.normal;
+    emit(m, f, contact_kind(m, f), make_segment(touch - mm.from, touch - mm.to));
   }
 
   void add_disc_on_disc(const ContactFeature& m, const ContactFeature& f) {
@@ -144,7 +158,7 @@ class ContactBuilder {
     const double eps = pair_.tol.geometric;
     std::array<AngleInterval, 2> parts;
     const int n = intersect_intervals(f.normals, opposed(m.normals), pair_.tol.angular, parts);
-    const Vec2 c = f.center - rot_.rotate(m.center);
+    const Vec2 c = f.center - moving(m).center;
     for (int i = 0; i < n; ++i) {
       if (std::fabs(rho) <= eps) {
         // A perfect fit, unless the features meet along a single touching direction only.
@@ -169,10 +183,29 @@ class ContactBuilder {
     }
   }
 
+  // The moving feature turned by theta (its centre, its edge's ends, the direction opposite
+  // its segment normal), kept for the feature met last (by address): each moving feature
+  // meets many fixed ones in a row.
+  struct Moving {
+    Vec2 center, from, to;
+    Vec2 normal;
+    bool has_normal = false;
+  };
+  Moving& moving(const ContactFeature& m) {
+    if (moving_of_ != &m) {
+      moving_of_ = &m;
+      moving_ = {rot_.rotate(m.center), rot_.rotate(m.edge.from), rot_.rotate(m.edge.to), {}};
+    }
+    return moving_;
+  }
+
   const Pair& pair_;
   Transform rot_;
   double theta_;
   std::vector<ContactSegment>& out_;
+  const std::vector<Vec2>* fixed_normals_;
+  const ContactFeature* moving_of_ = nullptr;
+  Moving moving_;
 };
 
 }  // namespace
@@ -187,10 +220,18 @@ class NormalIndex {
       : buckets_(std::clamp<size_t>(2 * fixed.size(), 64, 65536)), eps_(angular_eps) {
     width_ = kTwoPi / double(buckets_.size());
     ranges_.resize(fixed.size());
+    seen_.assign((fixed.size() + 63) / 64, 0);
     for (size_t i = 0; i < fixed.size(); ++i) {
       if (!fixed[i].can_touch) continue;
       ranges_[i] = range_of(fixed[i].normals);
       for_each_bucket(ranges_[i], [&](size_t b) { buckets_[b].push_back(int(i)); });
+    }
+    normals_.resize(fixed.size());
+    for (size_t i = 0; i < fixed.size(); ++i) normals_[i] = unit_vector(fixed[i].normals.lo);
+    if (fixed.size() <= kScanLimit) {
+      masks_.assign(buckets_.size(), 0);
+      for (size_t b = 0; b < buckets_.size(); ++b)
+        for (int i : buckets_[b]) masks_[b] |= uint64_t{1} << i;
     }
   }
 
@@ -200,17 +241,39 @@ class NormalIndex {
     out.clear();
     const Range r = range_of(normals);
     if (ranges_.size() <= kScanLimit) {
-      // Few features: testing each one's range costs less than gathering and sorting the
-      // buckets' lists, and finds the same features.
-      for (size_t i = 0; i < ranges_.size(); ++i)
-        if (ranges_[i].count > 0 && overlap(r, ranges_[i])) out.push_back(int(i));
+      // Few features: each bucket holds them as a bitmask; the features meeting r are
+      // the union of its buckets' masks, read back in feature order.
+      uint64_t bits = 0;
+      for_each_bucket_range(r, [&](size_t from, size_t to) {
+        for (size_t b = from; b < to; ++b) bits |= masks_[b];
+      });
+      for (; bits != 0; bits &= bits - 1) out.push_back(std::countr_zero(bits));
       return;
     }
-    for_each_bucket(
-        r, [&](size_t b) { out.insert(out.end(), buckets_[b].begin(), buckets_[b].end()); });
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
+    // A feature lies in every bucket its range meets: marked once each in a bitmap of the
+    // features, then read back in feature order, word by word over the words marked
+    // (sorting the gathered lists cost more than the contacts themselves on rough parts).
+    std::vector<uint64_t>& seen = seen_;
+    std::vector<size_t>& touched = touched_;
+    touched.clear();
+    for_each_bucket_range(r, [&](size_t from, size_t to) {
+      for (size_t b = from; b < to; ++b)
+        for (int i : buckets_[b]) {
+          uint64_t& word = seen[size_t(i) / 64];
+          if (word == 0) touched.push_back(size_t(i) / 64);
+          word |= uint64_t{1} << (size_t(i) % 64);
+        }
+    });
+    std::sort(touched.begin(), touched.end());
+    for (size_t w : touched) {
+      for (uint64_t bits = seen[w]; bits != 0; bits &= bits - 1)
+        out.push_back(int(64 * w + size_t(std::countr_zero(bits))));
+      seen[w] = 0;
+    }
   }
+
+  // unit_vector(f.normals.lo) of every fixed feature f, in feature order.
+  const std::vector<Vec2>& normals() const { return normals_; }
 
  private:
   static constexpr size_t kScanLimit = 64;
@@ -230,21 +293,25 @@ class NormalIndex {
     return {first, count};
   }
 
-  // Whether two cyclic ranges share a bucket: then one of them starts inside the other.
-  bool overlap(const Range& a, const Range& b) const {
-    const size_t n = buckets_.size();  // firsts are below n: one wrap at most
-    const size_t b_from_a = b.first >= a.first ? b.first - a.first : b.first + n - a.first;
-    const size_t a_from_b = a.first >= b.first ? a.first - b.first : a.first + n - b.first;
-    return b_from_a < a.count || a_from_b < b.count;
-  }
-
   template <class Fn>
   void for_each_bucket(const Range& r, Fn fn) const {
     for (size_t k = 0; k < r.count; ++k) fn((r.first + k) % buckets_.size());
   }
 
+  // The same buckets as for_each_bucket, as at most two runs [from, to) without the wrap.
+  template <class Fn>
+  void for_each_bucket_range(const Range& r, Fn fn) const {
+    const size_t n = buckets_.size(), end = r.first + r.count;
+    fn(r.first, std::min(end, n));
+    if (end > n) fn(size_t{0}, end - n);
+  }
+
   std::vector<std::vector<int>> buckets_;
-  std::vector<Range> ranges_;  // per fixed feature; empty when it cannot touch
+  std::vector<Range> ranges_;            // per fixed feature; empty when it cannot touch
+  std::vector<Vec2> normals_;            // per fixed feature, unit_vector(normals.lo)
+  std::vector<uint64_t> masks_;          // per bucket, its features as bits, when there are few
+  mutable std::vector<uint64_t> seen_;   // candidates' bitmap of fixed features, left all zero
+  mutable std::vector<size_t> touched_;  // the words of seen_ a query marked
   double width_ = 1.0;
   double eps_;
 };
@@ -259,7 +326,7 @@ ContactMaker::~ContactMaker() = default;
 
 void ContactMaker::segments(double theta, std::vector<ContactSegment>& out) {
   out.clear();
-  ContactBuilder builder(pair_, theta, out);
+  ContactBuilder builder(pair_, theta, out, &index_->normals());
   for (const ContactFeature& m : moving_) {
     if (!m.can_touch) continue;
     index_->candidates({m.normals.lo + theta + kPi, m.normals.span}, candidates_);

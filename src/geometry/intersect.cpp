@@ -85,9 +85,8 @@ bool drops_hit_at(const Intersection& r, Vec2 p, double eps) {
 // the two curves run within eps of each other there and never cross, even where the exact
 // circles do (a lens thinner than eps), so an end within eps of the other curve touches it
 // from the side the tangency implies.
-void add_endpoint_touches(Intersection& r, const Curve& a, const Curve& b, bool tangent,
-                          double eps) {
-  const double slack_a = carrier_slack(a, eps), slack_b = carrier_slack(b, eps);
+void add_endpoint_touches(Intersection& r, const Curve& a, const Curve& b, bool tangent, double eps,
+                          double slack_a, double slack_b) {
   for (double ta : {0.0, 1.0}) {
     const Vec2 p = ta == 0.0 ? a.from : a.to;  // point_at(a, ta)
     if (!near_carrier(b, p, eps, slack_b) || drops_hit_at(r, p, eps)) continue;
@@ -127,8 +126,10 @@ void add_if_on_both(Intersection& r, const Curve& a, const Curve& b, Vec2 p, boo
   auto parameter = [&](const Curve& c) {
     return c.is_arc() ? arc_parameter_within(c, p, eps) : segment_parameter_within(c, p, eps);
   };
-  const double ta = parameter(a), tb = parameter(b);
-  if (!std::isnan(ta) && !std::isnan(tb)) add_hit(r, point_hit(p, ta, tb, tangent), eps);
+  const double ta = parameter(a);
+  if (std::isnan(ta)) return;  // off a: b's parameter (an angle on an arc) is not needed
+  const double tb = parameter(b);
+  if (!std::isnan(tb)) add_hit(r, point_hit(p, ta, tb, tangent), eps);
 }
 
 // Collinear segments (both within eps of one carrier line): the shared piece, or a single
@@ -216,7 +217,8 @@ Intersection intersect_segment_segment(const Curve& a, const Curve& b, double ep
         add_hit(r, point_hit(lerp(a.from, a.to, tc), tc, std::clamp(u, 0.0, 1.0), false), eps);
       }
     }
-    add_endpoint_touches(r, a, b, false, eps);
+    // carrier_slack of each, from the lengths already at hand.
+    add_endpoint_touches(r, a, b, false, eps, eps * la, eps * lb);
   }
   finish_kind(r);
   return r;
@@ -244,7 +246,7 @@ Intersection intersect_segment_arc(const Curve& s, const Curve& arc, double eps)
         add_if_on_both(r, s, arc, q + (sign * k) * dir, false, eps);
       }
     }
-    add_endpoint_touches(r, s, arc, tangent, eps);
+    add_endpoint_touches(r, s, arc, tangent, eps, eps * len, carrier_slack(arc, eps));
   }
   finish_kind(r);
   return r;
@@ -280,7 +282,7 @@ Intersection intersect_arc_arc(const Curve& a, const Curve& b, double eps) {
       points[n++] = a.center + along * u - h * perp_left(u);
     }
     for (int i = 0; i < n; ++i) add_if_on_both(r, a, b, points[i], tangent, eps);
-    add_endpoint_touches(r, a, b, tangent, eps);
+    add_endpoint_touches(r, a, b, tangent, eps, carrier_slack(a, eps), carrier_slack(b, eps));
   }
   finish_kind(r);
   return r;

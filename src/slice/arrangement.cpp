@@ -39,7 +39,9 @@ struct ArrangementBuilder::Scratch {
   std::vector<uint64_t> keys;
   std::vector<int> next, count;
   std::vector<Vec2> points_by_x;
-  CellScratch by_cell;  // merge_points past its budget
+  CellScratch by_cell;               // merge_points past its budget
+  std::vector<int> slots, distinct;  // merge_points' exactly equal points
+  std::vector<size_t> used_slots;
   std::vector<int> order, vertex_of, vertex_of_root, fill;
   UnionFind uf;
   std::vector<int> start, along;
@@ -77,24 +79,68 @@ namespace {
 using Scratch = ArrangementBuilder::Scratch;
 using Direction = Scratch::Direction;
 
-// Indices 0 .. n - 1 sorted by x(i), ties by index: an LSD radix sort on the bits of the
-// doubles (made unsigned-comparable), stable, so equal keys keep their index order; the
-// same order as sorting (x, index) pairs, which is cheaper below a few thousand points.
-template <class X>
-void sorted_by_x(size_t n, X x, Scratch& s) {
+// Joins each split point to the first one at exactly the same place (Vec2 ==, so NaN
+// joins nothing) and lists the first ones, in index order, in s.distinct. Many split points
+// coincide exactly: a curve's end, and the same end as a hit of every curve meeting it there.
+void join_equal_points(const std::vector<SplitPoint>& splits, Scratch& s, UnionFind& uf) {
+  const size_t n = splits.size();
+  size_t size = 16;
+  while (size < 2 * n) size *= 2;
+  // Open addressing on the bits of (x, y): index + 1, or 0. Left all zero for the next call
+  // (the slots used are cleared one by one: clearing all would cost more on big slices).
+  std::vector<int>& slot = s.slots;
+  if (slot.size() != size) slot.assign(size, 0);
+  s.distinct.clear();
+  s.used_slots.clear();
+  for (size_t i = 0; i < n; ++i) {
+    const Vec2 p = splits[i].p;
+    uint64_t x, y;
+    std::memcpy(&x, &p.x, sizeof x);
+    std::memcpy(&y, &p.y, sizeof y);
+    uint64_t h = (x * 0x9E3779B97F4A7C15ull) ^ (y * 0xC2B2AE3D27D4EB4Full);
+    h ^= h >> 29;
+    size_t k = size_t(h) & (size - 1);
+    for (; slot[k] != 0 && !(splits[slot[k] - 1].p == p); k = (k + 1) & (size - 1)) {
+    }
+    if (slot[k] != 0) {
+      uf.unite(slot[k] - 1, int(i));
+    } else {
+      slot[k] = int(i) + 1;
+      s.distinct.push_back(int(i));
+      s.used_slots.push_back(k);
+    }
+  }
+  for (size_t k : s.used_slots) slot[k] = 0;
+}
+
+// The distinct split points sorted by x (s.order: their indices, s.points_by_x: where they
+// are): below a few thousand a comparison sort, above, where that costs more, an LSD radix
+// sort on the bits of x (made unsigned-comparable). Points of equal x come in any order.
+void sort_points_by_x(const std::vector<SplitPoint>& splits, Scratch& s) {
+  const std::vector<int>& distinct = s.distinct;
+  const size_t n = distinct.size();
   std::vector<int>& order = s.order;
+  std::vector<Vec2>& points = s.points_by_x;
   order.resize(n);
+  points.resize(n);
   if (n < 4096) {  // the radix passes only pay off on many points
     s.by_x.resize(n);
-    for (size_t i = 0; i < n; ++i) s.by_x[i] = {x(i), int(i)};
-    std::sort(s.by_x.begin(), s.by_x.end());
-    for (size_t i = 0; i < n; ++i) order[i] = s.by_x[i].second;
+    for (size_t i = 0; i < n; ++i) s.by_x[i] = {splits[distinct[i]].p.x, distinct[i]};
+    std::sort(s.by_x.begin(), s.by_x.end(),
+              [](const std::pair<double, int>& a, const std::pair<double, int>& b) {
+                return a.first < b.first;
+              });
+    for (size_t i = 0; i < n; ++i) {
+      order[i] = s.by_x[i].second;
+      points[i] = splits[order[i]].p;
+    }
     return;
   }
   std::vector<uint64_t>& key = s.keys;
   key.resize(n);
   for (size_t i = 0; i < n; ++i) {
-    const double v = x(i) == 0.0 ? 0.0 : x(i);  // -0 and +0 are equal
+    const double x = splits[distinct[i]].p.x;
+    const double v = x == 0.0 ? 0.0 : x;  // -0 and +0 are equal
     uint64_t bits;
     std::memcpy(&bits, &v, sizeof bits);
     key[i] = bits >> 63 ? ~bits : bits | (uint64_t{1} << 63);
@@ -115,26 +161,30 @@ void sorted_by_x(size_t n, X x, Scratch& s) {
     for (int i : order) next[count[(key[i] >> shift) & kMask]++] = i;
     order.swap(next);
   }
+  for (size_t i = 0; i < n; ++i) {
+    order[i] = distinct[order[i]];
+    points[i] = splits[order[i]].p;
+  }
 }
 
 // Merges split points closer than eps (transitively) into vertices; fills the vertex of each
 // split point (s.vertex_of) and the vertex positions (each the first point of its cluster:
 // the union-find keeps the lowest index as root, so the clusters and their vertices depend
-// only on which pairs are within eps, not on the order they are found in). A sweep in x
-// compares each point with the following ones less than eps further right; where many points
-// share an x-window (a perfect fit where many contact segments meet) that turns quadratic,
-// and past a budget the cells above take over.
+// only on which pairs are within eps, not on the order they are found in). Points at exactly
+// the same place are joined first; every distance from one of them is the others' distance,
+// so the rest compares the distinct points only. A sweep in x compares each point with the
+// following ones less than eps further right; where many points share an x-window (a
+// perfect fit where many contact segments meet) that turns quadratic, and past a budget the
+// cells above take over.
 void merge_points(Scratch& s, double eps, std::vector<Vec2>& vertices) {
   const std::vector<SplitPoint>& splits = s.splits;
-  std::vector<int>& order = s.order;
-  sorted_by_x(
-      splits.size(), [&](size_t i) { return splits[i].p.x; }, s);
-  const size_t n = splits.size();
-  std::vector<Vec2>& points = s.points_by_x;
-  points.resize(n);
-  for (size_t i = 0; i < n; ++i) points[i] = splits[order[i]].p;
   UnionFind& uf = s.uf;
-  uf.reset(n);
+  uf.reset(splits.size());
+  join_equal_points(splits, s, uf);
+  sort_points_by_x(splits, s);
+  const std::vector<int>& order = s.order;
+  const std::vector<Vec2>& points = s.points_by_x;
+  const size_t n = points.size();
   const size_t budget = 16 * n + 256;
   size_t work = 0;
   for (size_t i = 0; i < n && work <= budget; ++i) {
@@ -250,11 +300,14 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
   const std::vector<int>& vertex_of = s.vertex_of;
   // Split points along each curve in order of (t, index): grouped by curve, then each
   // curve's few points sorted (as compact (t, index) pairs).
-  std::vector<int>& start = s.start;
-  std::vector<int>& along = s.along;
-  group_by(
-      splits.size(), curves.size(), [&](size_t i) { return splits[i].curve; }, start, along,
-      s.fill);
+  // The grouping by curve is split_points' own when it added no points after building it.
+  const SplitsByCurve* grouped = s.split.grouping();
+  if (!grouped)
+    group_by(
+        splits.size(), curves.size(), [&](size_t i) { return splits[i].curve; }, s.start, s.along,
+        s.fill);
+  const std::vector<int>& start = grouped ? grouped->start : s.start;
+  const std::vector<int>& along = grouped ? grouped->index : s.along;
   std::vector<std::pair<double, int>>& at_t = s.at_t;
   at_t.resize(splits.size());
   for (size_t k = 0; k < along.size(); ++k) at_t[k] = {splits[along[k]].t, along[k]};
@@ -265,8 +318,11 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
   struct OnCurve {
     Vec2 point, tangent;
   };
+  // A segment's tangent is the same everywhere: computed once per curve (`direction`).
+  Vec2 direction;
   auto on_curve = [&](const Curve& c, double t) {
-    if (c.is_segment()) return OnCurve{point_at(c, t), normalized(c.to - c.from)};
+    if (c.is_segment())  // point_at, inline
+      return OnCurve{t == 0.0 ? c.from : t == 1.0 ? c.to : lerp(c.from, c.to, t), direction};
     const Vec2 radial = unit_vector(c.start_angle + t * c.sweep);
     const Vec2 p = t == 0.0 ? c.from : t == 1.0 ? c.to : c.center + c.radius * radial;
     return OnCurve{p, c.sweep > 0.0 ? perp_left(radial) : perp_right(radial)};
@@ -276,6 +332,7 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
   pieces.reserve(splits.size());
   for (size_t c = 0; c < curves.size(); ++c) {
     const Curve& curve = curves[c];
+    if (curve.is_segment()) direction = normalized(curve.to - curve.from);
     int cached = -1;  // the split point `at` describes
     OnCurve at{};
     for (int k = start[c]; k + 1 < start[c + 1]; ++k) {
@@ -414,7 +471,7 @@ void trace_cycles(Arrangement& arr, Scratch& s) {
   box.resize(arr.edges.size());
   for (size_t e = 0; e < arr.edges.size(); ++e) {
     area[e] = signed_area_contribution(arr.edges[e].curve);
-    box[e] = bounding_box(arr.edges[e].curve);
+    box[e] = curve_box(arr.edges[e].curve);
   }
   arr.cycle_of.assign(n, -1);
   arr.cycle_half_edges.reserve(n);
@@ -556,11 +613,6 @@ void collect_meetings(Scratch& s) {
 }
 
 }  // namespace
-
-Vec2 Arrangement::direction(int h) const {
-  const ArrangementEdge& e = edges[h / 2];
-  return h % 2 == 0 ? e.tangent_u : -e.tangent_v;
-}
 
 Curve Arrangement::half_curve(int h) const {
   const Curve& c = edges[h / 2].curve;

@@ -124,7 +124,11 @@ struct Arrangement {
   int target(int h) const { return h % 2 == 0 ? edges[h / 2].v : edges[h / 2].u; }
   int face_of(int h) const { return cycles[cycle_of[h]].face; }
   Curve half_curve(int h) const;  // the edge's curve oriented along h
-  Vec2 direction(int h) const;    // unit tangent of h where it leaves its origin
+  // Unit tangent of h where it leaves its origin.
+  Vec2 direction(int h) const {
+    const ArrangementEdge& e = edges[h / 2];
+    return h % 2 == 0 ? e.tangent_u : -e.tangent_v;
+  }
   // Whether h's face (its left side) is on the blocked side of label l of h's edge.
   static bool left_is_blocked(int h, const EdgeLabel& l) { return (h % 2 == 0) == l.blocked_left; }
 };

@@ -21,14 +21,20 @@
 namespace cslice {
 namespace {
 
+// One half-edge leaving a vertex, as sectors_explained_locally sees it.
+struct SectorSide {
+  Vec2 dir;
+  bool blocks_left, blocks_right, explained;
+};
+
 // Buffers of one slice's construction, kept by the Slicer between slices.
 struct SliceScratch {
   ArrangementBuilder arrangements;
   std::vector<Curve> curves;
   std::vector<int> ids, nodes, vertex_ids;
   std::vector<char> blocked, realizable;
-  std::vector<Vec2> samples, dir;
-  std::vector<char> explained;
+  std::vector<Vec2> samples;
+  std::vector<SectorSide> sides;
   FaceSampleScratch face_sample;
   size_t segments_hint = 0;  // contact segments of the last slice: the next has about as many
 };
@@ -148,34 +154,39 @@ class SliceBuilder {
   bool sectors_explained_locally(int v) {
     const std::span<const int> out = arr_->outgoing(int(v));
     const int d = int(out.size());
-    std::vector<Vec2>& dir = scratch_.dir;  // reused: called for most vertices of big slices
-    dir.resize(d);
-    for (int i = 0; i < d; ++i) dir[i] = arr_->direction(out[i]);
-    std::vector<char>& explained = scratch_.explained;
-    explained.assign(d, false);
+    // Per half-edge (reused buffer: called for most vertices of big slices): its direction,
+    // whether a label of it blocks its left (the sector counterclockwise of it) and its
+    // right, found in one pass over its labels rather than once per pair of half-edges.
+    std::vector<SectorSide>& side = scratch_.sides;
+    side.resize(d);
     for (int i = 0; i < d; ++i) {
-      const int next = (i + 1) % d;
-      const bool from_cw_side = has_label_blocking(out[i], true);
-      const bool from_ccw_side = has_label_blocking(out[next], false);
-      const bool narrow = d > 1 && cross(dir[i], dir[next]) > 0.0;
-      explained[i] = narrow ? (from_cw_side || from_ccw_side) : (from_cw_side && from_ccw_side);
+      SectorSide& x = side[i];
+      x.dir = arr_->direction(out[i]);
+      x.blocks_left = x.blocks_right = false;
+      for (const EdgeLabel& l : arr_->edges[out[i] / 2].labels)
+        (Arrangement::left_is_blocked(out[i], l) ? x.blocks_left : x.blocks_right) = true;
     }
+    bool all = true;
     for (int i = 0; i < d; ++i) {
+      const SectorSide& next = side[(i + 1) % d];
+      const bool from_cw_side = side[i].blocks_left;
+      const bool from_ccw_side = next.blocks_right;
+      const bool narrow = d > 1 && cross(side[i].dir, next.dir) > 0.0;
+      side[i].explained =
+          narrow ? (from_cw_side || from_ccw_side) : (from_cw_side && from_ccw_side);
+      all = all && side[i].explained;
+    }
+    if (all) return true;  // the half planes below only explain more
+    for (int i = 0; i < d; ++i) {
+      if (!side[i].blocks_left) continue;
       for (int j = 0; j < d; ++j) {
-        if (i == j || dot(dir[i], dir[j]) > 0.0 ||
-            std::fabs(cross(dir[i], dir[j])) > pair_.tol.angular)
+        if (i == j || !side[j].blocks_right || dot(side[i].dir, side[j].dir) > 0.0 ||
+            std::fabs(cross(side[i].dir, side[j].dir)) > pair_.tol.angular)
           continue;
-        if (has_label_blocking(out[i], true) && has_label_blocking(out[j], false))
-          for (int k = i; k != j; k = (k + 1) % d) explained[k] = true;
+        for (int k = i; k != j; k = (k + 1) % d) side[k].explained = true;
       }
     }
-    return std::all_of(explained.begin(), explained.end(), [](char c) { return c != 0; });
-  }
-
-  bool has_label_blocking(int h, bool left) const {
-    for (const EdgeLabel& l : arr_->edges[h / 2].labels)
-      if (Arrangement::left_is_blocked(h, l) == left) return true;
-    return false;
+    return std::all_of(side.begin(), side.end(), [](const SectorSide& x) { return x.explained; });
   }
 
   void find_degenerate_vertices() {

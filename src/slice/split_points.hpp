@@ -60,7 +60,23 @@ struct SplitScratch {
   SplitsByCurve fresh, all;
   std::vector<FreshSplit> points;
   std::vector<SplitPoint> added;
+  // After split_points: which of `fresh` and `all` groups every split point, as
+  // SplitsByCurve::build(splits, 0, curves) would, when one does (no points were added
+  // after it was built); null when neither does.
+  enum class Grouped : char { none, fresh, all } grouped = Grouped::none;
+  const SplitsByCurve* grouping() const {
+    return grouped == Grouped::fresh ? &fresh : grouped == Grouped::all ? &all : nullptr;
+  }
 };
+
+// The box of a curve, as bounding_box gives it, without the call for a segment.
+inline Box curve_box(const Curve& c) {
+  if (!c.is_segment()) return bounding_box(c);
+  Box b;
+  b.add(c.from);
+  b.add(c.to);
+  return b;
+}
 
 // Replaces `splits` with the split points of `curves` (each curve's two ends first, in curve
 // order, then the meetings of candidate pairs, then the shared points).

@@ -1,0 +1,106 @@
+// The slice's shortcuts against the plain computations they replace: the index of fixed
+// normals (and the per-slice rotations it shares) against every feature pair tried in turn,
+// and the arrangement's merge of exactly equal points against clusters of near ones.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "contacts/contact_features.hpp"
+#include "cslice/slice.hpp"
+#include "slice/arrangement.hpp"
+#include "support/random_parts.hpp"
+#include "support/random_polygons.hpp"
+
+using namespace cslice;
+
+namespace {
+
+// Every moving feature against every fixed one, in feature order: what ContactMaker finds
+// through its index, pair by pair, with nothing precomputed.
+std::vector<ContactSegment> every_pair(const Pair& pair, double theta) {
+  const std::vector<ContactFeature> moving = contact_features(pair.moving);
+  const std::vector<ContactFeature> fixed = contact_features(pair.fixed);
+  std::vector<ContactSegment> out;
+  for (const ContactFeature& m : moving)
+    for (const ContactFeature& f : fixed) add_pair_contacts(pair, m, f, theta, out);
+  return out;
+}
+
+bool same_bits(const Curve& a, const Curve& b) {
+  return a.from == b.from && a.to == b.to && a.center == b.center && a.radius == b.radius &&
+         a.start_angle == b.start_angle && a.sweep == b.sweep &&
+         (a.bulge == b.bulge || (std::isinf(a.bulge) && a.bulge == b.bulge));
+}
+
+void expect_same_contacts(const Pair& pair, const std::string& what) {
+  ContactMaker maker(pair);
+  std::vector<ContactSegment> found;
+  for (int k = 0; k < 16; ++k) {
+    const double theta = -kPi + (k + 0.3) * kTwoPi / 16;
+    maker.segments(theta, found);
+    const std::vector<ContactSegment> all = every_pair(pair, theta);
+    ASSERT_EQ(found.size(), all.size()) << what << " theta " << theta;
+    for (size_t i = 0; i < all.size(); ++i) {
+      EXPECT_EQ(found[i].moving_feature, all[i].moving_feature) << what << " segment " << i;
+      EXPECT_EQ(found[i].fixed_feature, all[i].fixed_feature) << what << " segment " << i;
+      EXPECT_EQ(found[i].kind, all[i].kind) << what << " segment " << i;
+      EXPECT_EQ(found[i].is_point, all[i].is_point) << what << " segment " << i;
+      EXPECT_TRUE(same_bits(found[i].curve, all[i].curve)) << what << " segment " << i;
+    }
+  }
+}
+
+}  // namespace
+
+// Few fixed features (at most 64: the index's bitmask per bucket) and many (its lists per
+// bucket, read back through a bitmap): both must find every pair that touches, in feature
+// order, with the same curves to the bit.
+TEST(SliceFastPaths, ContactIndexFindsEveryTouchingPair) {
+  std::mt19937 rng(77);
+  for (int i = 0; i < 8; ++i) {
+    const testkit::RandomPair rp = testkit::random_pair(rng, 4 + i, 5 + i, i % 2 == 0);
+    ASSERT_LE(rp.pair.fixed.feature_count(), 64);
+    expect_same_contacts(rp.pair, "random pair " + std::to_string(i));
+  }
+  for (const double jitter : {0.0, 0.3 * kTwoPi / 60}) {
+    const testkit::StarPairLoops loops = testkit::lobed_star_pair(rng, 60, jitter, 0.3);
+    const Pair pair =
+        testkit::parse_or_throw(testkit::pair_json("star", {loops.moving}, {loops.fixed}), "star");
+    ASSERT_GT(pair.fixed.feature_count(), 64);
+    expect_same_contacts(pair, "star");
+  }
+}
+
+// Rays from one point O, so that many split points coincide there exactly, and two more
+// segments starting near O: P within eps of O, Q within eps of P only. Exactly equal points
+// are joined before the sweep, which then compares one of them for all: P must still join
+// O's vertex, and Q through P.
+TEST(SliceFastPaths, EqualPointsStillJoinNearOnes) {
+  Tolerances tol;
+  tol.geometric = 1e-6;
+  tol.angular = 1e-7;
+  const Vec2 o{1.0, 2.0};
+  std::vector<Curve> curves;
+  for (const double degrees : {100.0, 160.0, 200.0, 250.0, 300.0, 340.0})
+    curves.push_back(make_segment(o, o + 3.0 * unit_vector(degrees * kPi / 180.0)));
+  const Vec2 p = o + Vec2{0.5e-6, 0.0}, q = o + Vec2{1.3e-6, 0.0};
+  curves.push_back(make_segment(p, {1.5, 5.0}));
+  curves.push_back(make_segment(q, {4.0, 2.5}));
+  std::vector<int> ids(curves.size());
+  for (size_t i = 0; i < ids.size(); ++i) ids[i] = int(i);
+  ArrangementBuilder builder;
+  const Arrangement& arr = builder.build(curves, ids, tol);
+  int near_o = 0;
+  for (const Vec2& v : arr.vertices) {
+    if (distance(v, o) > 10 * tol.geometric) continue;
+    ++near_o;
+    EXPECT_TRUE(v == o);  // the cluster's first split point: the first ray's start
+  }
+  EXPECT_EQ(near_o, 1);
+  EXPECT_EQ(arr.vertices.size(), curves.size() + 1);
+  EXPECT_EQ(arr.edges.size(), curves.size());
+  EXPECT_EQ(arr.outgoing(0).size(), curves.size());
+}
