@@ -185,9 +185,11 @@ double turn_rate(const ContactFamily& f, const MovingPoint& e) {
   return length(e.q - f.center.q) / f.radius;
 }
 
-Vec2 direction_at(const ContactFamily& f, const MovingPoint& e, double theta) {
-  if (f.shape != FamilyShape::circle) return normalized(f.ends[1].at(theta) - f.ends[0].at(theta));
-  return perp_left(normalized(e.at(theta) - f.center.at(theta)));
+// rotation = Transform(Pose{0, 0, theta}).
+Vec2 direction_at(const ContactFamily& f, const MovingPoint& e, const Transform& rotation) {
+  if (f.shape != FamilyShape::circle)
+    return normalized(f.ends[1].at(rotation) - f.ends[0].at(rotation));
+  return perp_left(normalized(e.at(rotation) - f.center.at(rotation)));
 }
 
 const MovingPoint* shared_end(const ContactFamily& x, const ContactFamily& y, double eps,
@@ -208,7 +210,9 @@ Exclusion shared_end_exclusion(const ContactFamily& x, const ContactFamily& y,
   if (!ex || x.is_point() || y.is_point()) return {};
   const double half = 0.5 * scope.binning.width;
   const double mid = scope.binning.lower(scope.bin) + half;
-  const double sine = std::fabs(cross(direction_at(x, *ex, mid), direction_at(y, *ey, mid)));
+  const Transform rotation(Pose{0.0, 0.0, mid});
+  const double sine =
+      std::fabs(cross(direction_at(x, *ex, rotation), direction_at(y, *ey, rotation)));
   const double phi =
       std::asin(std::min(sine, 1.0)) - (turn_rate(x, *ex) + turn_rate(y, *ey)) * half;
   if (phi <= 0.0) return {};
@@ -223,7 +227,7 @@ Exclusion shared_end_exclusion(const ContactFamily& x, const ContactFamily& y,
     chord = 2.0 * (x.shape == FamilyShape::circle ? x.radius : y.radius) * s;
   // E itself moves within the bin.
   const double radius = chord - length(ex->q) * half - scope.tolerance;
-  return radius > 0.0 ? Exclusion{ex->at(mid), radius} : Exclusion{};
+  return radius > 0.0 ? Exclusion{ex->at(rotation), radius} : Exclusion{};
 }
 
 // Whether the third family can pass through a point where the first two meet within the bin,
@@ -237,10 +241,35 @@ bool may_meet_at(const WholeCrossing& w, const BinEntry& z, const Exclusion& ex)
   return false;
 }
 
+// A neighbour, and the shared end the two have (an index into the shared ends; -1 when none,
+// -2 when not looked up yet).
+struct Neighbour {
+  int index = 0;
+  int shared = -2;
+};
+struct Shared {
+  Exclusion exclusion;
+  std::optional<WholeCrossing> crossing;  // computed when first needed
+};
+
+// The lists of one bin, kept per thread from bin to bin with their capacity: a bin's
+// neighbour lists were most of the allocations of the meeting pass.
+struct MeetingScratch {
+  std::vector<std::vector<Neighbour>> near;
+  std::vector<Shared> shared;
+  void reset(size_t entries) {
+    if (near.size() < entries) near.resize(entries);
+    for (size_t i = 0; i < entries; ++i) near[i].clear();
+    shared.clear();
+  }
+};
+
 class BinMeeting {
  public:
-  BinMeeting(const std::vector<BinEntry>& entries, const BinScope& scope)
-      : entries_(entries), scope_(scope), near_(entries.size()) {}
+  BinMeeting(const std::vector<BinEntry>& entries, const BinScope& scope, MeetingScratch& scratch)
+      : entries_(entries), scope_(scope), near_(scratch.near), shared_(scratch.shared) {
+    scratch.reset(entries.size());
+  }
 
   void run(std::vector<MeetingCandidate>& pairs, std::vector<MeetingCandidate>& triples) {
     find_pairs(pairs);
@@ -250,17 +279,6 @@ class BinMeeting {
   }
 
  private:
-  // A neighbour, and the shared end the two have (an index into shared_; -1 when none, -2
-  // when not looked up yet).
-  struct Neighbour {
-    int index = 0;
-    int shared = -2;
-  };
-  struct Shared {
-    Exclusion exclusion;
-    std::optional<WholeCrossing> crossing;  // computed when first needed
-  };
-
   void find_pairs(std::vector<MeetingCandidate>& pairs) {
     const auto& e = entries_;
     for (size_t i = 0; i < e.size(); ++i)
@@ -270,8 +288,9 @@ class BinMeeting {
           near_[j].push_back({int(i)});
           pairs.push_back(ordered(e[i].family, e[j].family, -1, scope_.bin));
         }
-    for (auto& n : near_)
-      std::sort(n.begin(), n.end(), [](Neighbour x, Neighbour y) { return x.index < y.index; });
+    for (size_t i = 0; i < e.size(); ++i)
+      std::sort(near_[i].begin(), near_[i].end(),
+                [](Neighbour x, Neighbour y) { return x.index < y.index; });
   }
 
   // The position of k among i's neighbours, or -1.
@@ -329,8 +348,8 @@ class BinMeeting {
 
   const std::vector<BinEntry>& entries_;
   const BinScope& scope_;
-  std::vector<std::vector<Neighbour>> near_;
-  std::vector<Shared> shared_;
+  std::vector<std::vector<Neighbour>>& near_;  // the first entries_.size() lists
+  std::vector<Shared>& shared_;
 };
 
 }  // namespace
@@ -338,7 +357,8 @@ class BinMeeting {
 void meeting_candidates(const std::vector<BinEntry>& entries, const BinScope& scope,
                         std::vector<MeetingCandidate>& pairs,
                         std::vector<MeetingCandidate>& triples) {
-  BinMeeting(entries, scope).run(pairs, triples);
+  thread_local MeetingScratch scratch;
+  BinMeeting(entries, scope, scratch).run(pairs, triples);
 }
 
 void MeetingTask::add_run(int first, int last) {
@@ -353,7 +373,7 @@ void MeetingTask::add_run(int first, int last) {
 
 bool MeetingTask::near(const Binning& binning, double theta, double slack) const {
   for (int r = 0; r < run_count; ++r) {
-    double d = std::fmod(theta - binning.lower(runs[r][0]), kTwoPi);
+    double d = fmod_two_pi(theta - binning.lower(runs[r][0]));
     if (d < 0.0) d += kTwoPi;
     const double span = (runs[r][1] - runs[r][0] + 1) * binning.width;
     if (d <= span + slack || d >= kTwoPi - slack) return true;

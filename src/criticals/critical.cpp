@@ -18,7 +18,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #include <algorithm>
-#include <map>
+#include <bit>
+#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -77,7 +78,15 @@ struct Context {
         binning(std::clamp(int(families.size()) / 8, 32, 1 << 12)),
         alive(alive_families_by_bin(families, binning)) {
     for (const ContactFamily& f : families) equations.push_back(family_equation(f));
+    size_t total = 0;
+    for (const std::vector<int>& bin : alive) total += bin.size();
+    if (total <= kKeptEntries) kept_entries.resize(size_t(binning.count));
   }
+
+  // The meeting pass builds every bin's entries, and screening needs them again for the bins
+  // it probes: kept from one to the other unless there are more than this many (a memory
+  // bound; a large pair rebuilds the few bins it probes instead).
+  static constexpr size_t kKeptEntries = size_t(1) << 16;
 
   // The pair with its geometric epsilon widened to the criticality tolerance: the placement
   // test then calls blocked only overlaps deeper than a criticality's own round-off.
@@ -103,6 +112,9 @@ struct Context {
   std::vector<FamilyEquation> equations;
   Binning binning;
   std::vector<std::vector<int>> alive;  // per bin
+  // Per bin, its entries as the meeting pass built them (empty when not kept: see
+  // kKeptEntries). Each bin's slot is written by the one task meeting it, then only read.
+  std::vector<std::vector<BinEntry>> kept_entries;
 };
 
 // Solves and validates (pass 2) and probes blocked space (pass 3); one per thread.
@@ -180,6 +192,31 @@ class Worker {
     return out;
   }
 
+  // segments_of, remembered for the last orientation asked: a bin's probes cut each contact
+  // segment by its neighbours', and several candidates there share an orientation (a switch
+  // seen by several families). The segments at one theta are rebuilt the same every time, so
+  // this changes no answer. A reference stays valid until the orientation changes.
+  const std::vector<ContactSegment>& segments_at(int family, double theta) {
+    if (memo_.empty()) {
+      memo_.resize(ctx_.families.size());
+      memo_stamp_.assign(ctx_.families.size(), 0u);
+    }
+    // Bitwise: the segments at theta = -0 and +0 need not agree.
+    if (!memo_used_ || std::bit_cast<std::uint64_t>(theta) != memo_theta_) {
+      memo_used_ = true;
+      memo_theta_ = std::bit_cast<std::uint64_t>(theta);
+      if (++memo_now_ == 0) {  // wrapped: no stale stamp may match
+        std::fill(memo_stamp_.begin(), memo_stamp_.end(), 0u);
+        memo_now_ = 1;
+      }
+    }
+    if (memo_stamp_[family] != memo_now_) {
+      segments_of(family, theta, memo_[family]);
+      memo_stamp_[family] = memo_now_;
+    }
+    return memo_[family];
+  }
+
   // How near x lies to the family's contact segments at theta, and to their ends: one
   // rebuild of the segments answers both.
   struct Nearness {
@@ -206,7 +243,8 @@ class Worker {
   void add_endpoint(int a, int end, int b, double theta) {
     if (!all_alive({a, b}, theta)) return reject();
     const Vec2 x = ctx_.families[a].ends[end].at(theta);
-    if (!nearness(a, theta, x).at_end || !nearness(b, theta, x).on_segment) return reject();
+    // Both must hold; the end lying off b's segment is the common failure, so it goes first.
+    if (!nearness(b, theta, x).on_segment || !nearness(a, theta, x).at_end) return reject();
     found.push_back({CriticalCondition::endpoint, {a, b, -1}, 2, theta, x});
   }
 
@@ -243,11 +281,15 @@ class Worker {
   // the ends of adjoining segments, one switch seen by several families).
   bool blocked_cached(Vec2 x, double theta) {
     const double cell = ctx_.pair.tol.criticality;
-    const std::array<long long, 3> key{std::llround(theta / ctx_.pair.tol.critical_angle),
-                                       std::llround(x.x / cell), std::llround(x.y / cell)};
-    if (auto it = cache_.find(key); it != cache_.end()) return it->second;
+    const ProbeKey key{std::llround(theta / ctx_.pair.tol.critical_angle), std::llround(x.x / cell),
+                       std::llround(x.y / cell)};
+    // A sorted vector: a bin's probes are few, and a map would allocate per entry.
+    auto it =
+        std::lower_bound(cache_.begin(), cache_.end(), key,
+                         [](const auto& entry, const ProbeKey& k) { return entry.first < k; });
+    if (it != cache_.end() && it->first == key) return it->second;
     const bool b = blocked(x, theta);
-    cache_.emplace(key, b);
+    cache_.insert(it, {key, b});
     return b;
   }
 
@@ -257,18 +299,19 @@ class Worker {
   }
 
   const std::vector<BinEntry>& bin_entries() {
+    if (!ctx_.kept_entries.empty()) return ctx_.kept_entries[size_t(bin_)];
     if (!entries_) entries_ = ctx_.entries(bin_);
     return *entries_;
   }
 
   bool overlap_reaches_free(const Candidate& c) {
     if (c.count != 2) return false;
-    std::vector<ContactSegment> a, b;
-    segments_of(c.families[0], c.theta, a);
-    segments_of(c.families[1], c.theta, b);
+    const std::vector<ContactSegment>& a = segments_at(c.families[0], c.theta);
+    const std::vector<ContactSegment>& b = segments_at(c.families[1], c.theta);
     // Piece by piece, stopping at the first free probe: the probes tested, and so the cache,
     // are those of testing them all in this order up to that one.
-    std::vector<Vec2> probes;
+    std::vector<Vec2>& probes = probes_;  // scratch, kept with its capacity
+    probes.clear();
     for (const ContactSegment& sa : a)
       for (const ContactSegment& sb : b)
         if (intersect(sa.curve, sb.curve, ctx_.pair.tol.geometric).kind ==
@@ -286,12 +329,13 @@ class Worker {
   // point only would be a degenerate contact, which the crossing's own criticalities see).
   bool segment_end_reaches_free(const Candidate& c) {
     const int family = c.families[0];
-    std::vector<ContactSegment> own;
-    segments_of(family, c.theta, own);
+    const std::vector<ContactSegment>& own = segments_at(family, c.theta);
     // Cheap probes first (the ends and each segment's middle); cutting into pieces only when
     // those are all blocked.
-    std::vector<Vec2> probes;
-    for (const MovingPoint& e : ctx_.families[family].ends) probes.push_back(e.at(c.theta));
+    std::vector<Vec2>& probes = probes_;  // scratch, kept with its capacity
+    probes.clear();
+    const Transform rotation(Pose{0.0, 0.0, c.theta});
+    for (const MovingPoint& e : ctx_.families[family].ends) probes.push_back(e.at(rotation));
     for (const ContactSegment& s : own) probes.push_back(point_at(s.curve, 0.5));
     if (any_free(probes, c.theta)) return true;
     for (const ContactSegment& s : own) {
@@ -303,12 +347,12 @@ class Worker {
   }
 
   void add_piece_probes(int family, const Curve& curve, double theta, std::vector<Vec2>& probes) {
-    std::vector<double> cuts = {0.0, 1.0};
+    std::vector<double>& cuts = cuts_;  // scratch, kept with its capacity
+    cuts.assign({0.0, 1.0});
     const Box box = bounding_box(curve).inflated(ctx_.pair.tol.criticality);
-    std::vector<ContactSegment> others;
     for (const BinEntry& n : bin_entries()) {
       if (n.family == family || !n.box.overlaps(box)) continue;
-      for (const ContactSegment& s : segments_of(n.family, theta, others)) {
+      for (const ContactSegment& s : segments_at(n.family, theta)) {
         const Intersection hit = intersect(curve, s.curve, ctx_.pair.tol.geometric);
         for (int h = 0; h < hit.count; ++h) {
           cuts.push_back(hit.hits[h].ta0);
@@ -324,8 +368,16 @@ class Worker {
   const Context& ctx_;
   PlacementTester tester_;
   std::vector<ContactSegment> scratch_;
+  std::vector<std::vector<ContactSegment>> memo_;  // segments_at(), by family
+  std::vector<unsigned> memo_stamp_;               // memo_now_ when memo_[f] was built
+  unsigned memo_now_ = 0;
+  std::uint64_t memo_theta_ = 0;
+  bool memo_used_ = false;
   std::vector<double> near_;  // roots()
-  std::map<std::array<long long, 3>, bool> cache_;
+  std::vector<Vec2> probes_;  // the probes of one candidate (reaches_free)
+  std::vector<double> cuts_;  // add_piece_probes()
+  using ProbeKey = std::array<long long, 3>;
+  std::vector<std::pair<ProbeKey, bool>> cache_;  // sorted by key
   int bin_ = 0;
   std::optional<std::vector<BinEntry>> entries_;  // of bin_, when built
 };
@@ -349,6 +401,7 @@ class CriticalFinder {
     std::sort(found.begin(), found.end(), before);
     const std::vector<char> keep = screen(found);
     for (auto& w : workers_) add_stats(w->stats);
+    kept_.reserve(size_t(std::count_if(keep.begin(), keep.end(), [](char k) { return k != 0; })));
     for (size_t i = 0; i < found.size(); ++i)
       if (keep[i]) kept_.push_back(criticality(found[i]));
     set_.stats.blocked = long(found.size() - kept_.size());
@@ -372,7 +425,9 @@ class CriticalFinder {
       tbb::enumerable_thread_specific<Found> per_thread;
       tbb::parallel_for(first, std::min(first + kBlock, ctx_.binning.count), [&](int b) {
         Found& f = per_thread.local();
-        meeting_candidates(ctx_.entries(b), ctx_.scope(b), f.pairs, f.triples);
+        std::vector<BinEntry> entries = ctx_.entries(b);
+        meeting_candidates(entries, ctx_.scope(b), f.pairs, f.triples);
+        if (!ctx_.kept_entries.empty()) ctx_.kept_entries[size_t(b)] = std::move(entries);
       });
       std::vector<MeetingCandidate> block_pairs, block_triples;
       for (Found& f : per_thread) {
@@ -469,6 +524,7 @@ class CriticalFinder {
     k.theta = wrap_angle(c.theta);
     k.condition = c.condition;
     k.at = c.at;
+    k.pairs.reserve(size_t(c.count));
     for (int i = 0; i < c.count; ++i) {
       const ContactFamily& fam = ctx_.families[c.families[i]];
       k.pairs.push_back({fam.moving, fam.fixed, fam.kind});
@@ -500,9 +556,11 @@ class CriticalFinder {
       double lo = kept_[starts[g]].theta, hi = kept_[end - 1].theta;
       if (g == 0 && wrapped < kept_.size()) {
         lo = kept_[wrapped].theta - kTwoPi;
-        for (size_t i = wrapped; i < kept_.size(); ++i) o.criticalities.push_back(kept_[i]);
+        for (size_t i = wrapped; i < kept_.size(); ++i)
+          o.criticalities.push_back(std::move(kept_[i]));
       }
-      for (size_t i = starts[g]; i < end; ++i) o.criticalities.push_back(kept_[i]);
+      // Each criticality goes to one group, and its angle was read above: moved, not copied.
+      for (size_t i = starts[g]; i < end; ++i) o.criticalities.push_back(std::move(kept_[i]));
       o.theta = wrap_angle(0.5 * (lo + hi));
       set_.orientations.push_back(std::move(o));
     }

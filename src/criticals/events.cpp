@@ -85,7 +85,8 @@ EventEquation triple_equation(const FamilyEquation& a, const FamilyEquation& b,
   return {t1 + t2 + t3, norm_sum({&t1, &t2, &t3})};
 }
 
-Vec2 tangent_point(const FamilyEquation& a, const FamilyEquation& b, double theta) {
+Vec2 tangent_point(const FamilyEquation& a, const FamilyEquation& b, double angle) {
+  const TrigAngle theta(angle);  // one sin/cos pair for every evaluation
   if (a.circle != b.circle) {
     const FamilyEquation& line = a.circle ? b : a;
     const FamilyEquation& circle = a.circle ? a : b;
@@ -100,7 +101,8 @@ Vec2 tangent_point(const FamilyEquation& a, const FamilyEquation& b, double thet
 }
 
 std::optional<Vec2> triple_point(const FamilyEquation& a, const FamilyEquation& b,
-                                 const FamilyEquation& c, double theta) {
+                                 const FamilyEquation& c, double angle) {
+  const TrigAngle theta(angle);  // one sin/cos pair for every evaluation
   const FamilyEquation* e[3] = {&a, &b, &c};
   const FamilyEquation* g = nullptr;
   for (auto* x : e)

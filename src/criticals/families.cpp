@@ -53,7 +53,7 @@ double moving_point_speed(const ContactFamily& f) {
       std::max(length(c + rho * unit_vector(n.lo)), length(c + rho * unit_vector(n.lo + n.span)));
   // The farthest point of the whole circle from the origin, if the normals reach it.
   double far = std::atan2(c.y, c.x) + (rho < 0.0 ? kPi : 0.0);
-  double d = std::fmod(far - n.lo, kTwoPi);
+  double d = fmod_two_pi(far - n.lo);
   if (d < 0.0) d += kTwoPi;
   if (is_full(n) || d <= n.span) v = std::max(v, length(c) + std::fabs(rho));
   return v;
@@ -116,7 +116,7 @@ std::vector<ContactFamily> contact_families(const Pair& pair) {
 
 bool alive_at(const ContactFamily& family, double theta, double slack) {
   if (family.always_alive()) return true;
-  double d = std::fmod(theta - family.alive.lo, kTwoPi);
+  double d = fmod_two_pi(theta - family.alive.lo);
   if (d < 0.0) d += kTwoPi;
   return d <= family.alive.span + slack || d >= kTwoPi - slack;
 }
@@ -124,15 +124,17 @@ bool alive_at(const ContactFamily& family, double theta, double slack) {
 // Whether [lo, hi] meets the family's alive interval (both taken around the circle).
 bool alive_within(const ContactFamily& family, double lo, double hi) {
   if (family.always_alive()) return true;
-  double d = std::fmod(family.alive.lo - lo, kTwoPi);
+  double d = fmod_two_pi(family.alive.lo - lo);
   if (d < 0.0) d += kTwoPi;
   // The alive interval starts d after lo: inside [lo, hi], or began before lo and lasts.
   return d <= hi - lo || d + family.alive.span >= kTwoPi;
 }
 
 Curve family_cover(const ContactFamily& family, double theta) {
-  if (family.shape != FamilyShape::circle)
-    return make_segment(family.ends[0].at(theta), family.ends[1].at(theta));
+  if (family.shape != FamilyShape::circle) {
+    const Transform rotation(Pose{0.0, 0.0, theta});
+    return make_segment(family.ends[0].at(rotation), family.ends[1].at(rotation));
+  }
   const Vec2 c = family.center.at(theta);
   if (family.radius == 0.0) return make_segment(c, c);
   AngleInterval normals = family.fixed_normals;
@@ -161,7 +163,7 @@ AngleInterval widened(const AngleInterval& a, double by) {
 std::optional<AngleInterval> meeting(const AngleInterval& a, const AngleInterval& b) {
   if (is_full(a)) return b;
   if (is_full(b)) return a;
-  double d = std::fmod(b.lo - a.lo, kTwoPi);  // where b starts, seen from a.lo
+  double d = fmod_two_pi(b.lo - a.lo);  // where b starts, seen from a.lo
   if (d < 0.0) d += kTwoPi;
   if (d <= a.span) {
     if (d + b.span > kTwoPi) return std::nullopt;  // b wraps back into a: two pieces

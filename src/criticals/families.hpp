@@ -20,6 +20,8 @@ enum class FamilyShape {
 struct MovingPoint {
   Vec2 p, q;
   Vec2 at(double theta) const;
+  // The same point for rotation = Transform(Pose{0, 0, theta}): one sin/cos pair for many.
+  Vec2 at(const Transform& rotation) const { return p + rotation.rotate(q); }
 };
 
 struct ContactFamily {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
-#include <complex>
+#include <utility>
 
 namespace cslice {
 
@@ -27,24 +27,35 @@ int Trig::degree() const {
   return 0;
 }
 
+// Coefficients above `top` are zero and leave the largest magnitude as it is.
 double Trig::norm() const {
   double n = 0.0;
-  for (int j = 0; j <= kMaxDegree; ++j) n = std::max({n, std::fabs(a[j]), std::fabs(b[j])});
+  for (int j = 0; j <= top; ++j) n = std::max(n, std::max(std::fabs(a[j]), std::fabs(b[j])));
   return n;
 }
 
-double Trig::operator()(double theta) const {
-  // Harmonics by the rotation recurrence: one sin/cos pair per evaluation.
-  const double c1 = std::cos(theta), s1 = std::sin(theta);
-  double c = 1.0, s = 0.0, v = a[0];
-  const int n = degree();
+namespace {
+// f at the angle whose cosine and sine are c1, s1: harmonics by the rotation recurrence.
+double evaluate_at(const Trig& f, double c1, double s1) {
+  double c = 1.0, s = 0.0, v = f.a[0];
+  const int n = f.degree();
   for (int j = 1; j <= n; ++j) {
     const double cn = c * c1 - s * s1;
     s = s * c1 + c * s1;
     c = cn;
-    v += a[j] * c + b[j] * s;
+    v += f.a[j] * c + f.b[j] * s;
   }
   return v;
+}
+}  // namespace
+
+double Trig::operator()(double theta) const {
+  // One sin/cos pair per evaluation.
+  return evaluate_at(*this, std::cos(theta), std::sin(theta));
+}
+
+double Trig::operator()(const TrigAngle& theta) const {
+  return evaluate_at(*this, theta.c, theta.s);
 }
 
 Trig Trig::derivative() const {
@@ -125,12 +136,17 @@ void accumulate(Complex& acc, Complex x) {
   acc.re += x.re;
   acc.im += x.im;
 }
-}  // namespace
 
-Trig operator*(const Trig& f, const Trig& g) {
-  const int nf = f.degree(), ng = g.degree();
-  assert(nf + ng <= Trig::kMaxDegree);
-  std::array<Complex, Trig::kMaxDegree + 1> acc{};
+// The product of f (degree nf) and g (degree ng). Templated on the degrees for the small
+// ones, so that the loops unroll: the operations and their order are those of the general
+// case, so the bits are too.
+template <int NF, int NG>
+Trig multiply(const Trig& f, const Trig& g, int nf, int ng) {
+  if constexpr (NF >= 0) nf = NF;
+  if constexpr (NG >= 0) ng = NG;
+  // Accumulators for the frequencies the product reaches (all of them when not templated).
+  constexpr int kAcc = NF >= 0 && NG >= 0 ? NF + NG + 1 : Trig::kMaxDegree + 1;
+  std::array<Complex, kAcc> acc{};
   for (int j = 0; j <= nf; ++j) {
     const Complex u{f.a[j], -f.b[j]}, half_u = half(u);
     for (int k = 0; k <= ng; ++k) {
@@ -155,11 +171,46 @@ Trig operator*(const Trig& f, const Trig& g) {
   return r;
 }
 
+using Multiply = Trig (*)(const Trig&, const Trig&, int, int);
+constexpr int kUnrolledDegree = 3;  // triple equations multiply factors of degree <= 3
+
+template <int NF, int... NG>
+constexpr std::array<Multiply, sizeof...(NG)> multiply_row(std::integer_sequence<int, NG...>) {
+  return {&multiply<NF, NG>...};
+}
+template <int... NF>
+constexpr auto multiply_table(std::integer_sequence<int, NF...>) {
+  using Seq = std::make_integer_sequence<int, kUnrolledDegree + 1>;
+  return std::array<std::array<Multiply, kUnrolledDegree + 1>, sizeof...(NF)>{
+      multiply_row<NF>(Seq{})...};
+}
+constexpr auto kMultiply = multiply_table(std::make_integer_sequence<int, kUnrolledDegree + 1>{});
+
+}  // namespace
+
+Trig operator*(const Trig& f, const Trig& g) {
+  const int nf = f.degree(), ng = g.degree();
+  assert(nf + ng <= Trig::kMaxDegree);
+  if (nf <= kUnrolledDegree && ng <= kUnrolledDegree) return kMultiply[nf][ng](f, g, nf, ng);
+  return multiply<-1, -1>(f, g, nf, ng);
+}
+
+namespace {
+// constant(c) + harmonic(cos_part, sin_part), written out: the same additions (each with the
+// other term's zero, which turns a -0 into +0), without the two temporaries.
+Trig constant_plus_harmonic(double c, double cos_part, double sin_part) {
+  Trig t;
+  t.top = 1;
+  t.a[0] = c + 0.0;
+  t.b[0] = 0.0 + 0.0;
+  t.a[1] = 0.0 + cos_part;
+  t.b[1] = 0.0 + sin_part;
+  return t;
+}
+}  // namespace
+
 TrigVec rotating_point(Vec2 p, Vec2 q) {
-  TrigVec v;
-  v.x = Trig::constant(p.x) + Trig::harmonic(q.x, -q.y);
-  v.y = Trig::constant(p.y) + Trig::harmonic(q.y, q.x);
-  return v;
+  return {constant_plus_harmonic(p.x, q.x, -q.y), constant_plus_harmonic(p.y, q.y, q.x)};
 }
 
 TrigVec constant_vec(Vec2 v) {
@@ -182,6 +233,9 @@ Trig cross(const TrigVec& u, const TrigVec& v) {
   return u.x * v.y - u.y * v.x;
 }
 Vec2 evaluate(const TrigVec& v, double theta) {
+  return {v.x(theta), v.y(theta)};
+}
+Vec2 evaluate(const TrigVec& v, const TrigAngle& theta) {
   return {v.x(theta), v.y(theta)};
 }
 
@@ -208,10 +262,39 @@ struct RootList {
   }
 };
 
-double eval(const Poly& p, double t) {
+// Horner's rule. The size is a template argument for the sizes met, so that the loop
+// unrolls; the operations and their order stay those of the plain loop.
+template <int N>
+double horner(const double* c, double t, int n) {
+  if constexpr (N >= 0) n = N;
   double v = 0.0;
-  for (int i = p.size; i-- > 0;) v = v * t + p.c[i];
+  for (int i = n; i-- > 0;) v = v * t + c[i];
   return v;
+}
+
+// p(t), and p'(t) from dp = derivative(p): the same two sums as two separate calls.
+template <int N>
+std::pair<double, double> horner2(const double* c, const double* dc, double t, int n) {
+  if constexpr (N >= 0) n = N;
+  double v = 0.0, w = 0.0;
+  for (int i = n; i-- > 0;) {
+    v = v * t + c[i];
+    if (i > 0) w = w * t + dc[i - 1];
+  }
+  return {v, w};
+}
+
+constexpr int kUnrolledSize = 2 * 3 + 1;  // triple equations have degree <= 3 in theta
+
+template <int... N>
+constexpr auto horner_table(std::integer_sequence<int, N...>) {
+  return std::array<double (*)(const double*, double, int), sizeof...(N)>{&horner<N>...};
+}
+constexpr auto kHorner = horner_table(std::make_integer_sequence<int, kUnrolledSize + 1>{});
+
+double eval(const Poly& p, double t) {
+  if (p.size <= kUnrolledSize) return kHorner[p.size](p.c.data(), t, p.size);
+  return horner<-1>(p.c.data(), t, p.size);
 }
 
 Poly derivative(const Poly& p) {
@@ -227,27 +310,55 @@ void trim(Poly& p) {
 
 // (1 + t^2)^n F(2 atan t): with e^{i.theta} = (1 + it)^2 / (1 + t^2), each harmonic
 // Re(F_j e^{ij.theta}) becomes Re(F_j (1 + it)^{2j}) (1 + t^2)^{n - j}.
-Poly to_half_angle(const Trig& f) {
-  const int n = f.degree();
-  using C = std::complex<double>;
-  // w = (1 + it)^{2j}, built up two factors at a time; s = (1 + t^2)^{n - j}, built down.
-  std::array<C, kMaxPolyDegree + 1> w{};
-  w[0] = 1.0;
-  std::array<std::array<double, kMaxPolyDegree + 1>, Trig::kMaxDegree + 1> s{};
+// The coefficients of (1 + t^2)^k, lowest degree first (exact small integers).
+using Binomials = std::array<std::array<double, kMaxPolyDegree + 1>, Trig::kMaxDegree + 1>;
+constexpr Binomials binomials() {
+  Binomials s{};
   s[0][0] = 1.0;
-  for (int k = 1; k <= n; ++k)
+  for (int k = 1; k <= Trig::kMaxDegree; ++k)
     for (int i = 0; i <= 2 * k; ++i)
       s[k][i] = (i <= 2 * k - 2 ? s[k - 1][i] : 0.0) + (i >= 2 ? s[k - 1][i - 2] : 0.0);
+  return s;
+}
+constexpr Binomials kBinomials = binomials();
+
+// The coefficients of w_j = (1 + it)^{2j}, lowest degree first (exact small integers): built up
+// two factors of (1 + it) at a time.
+struct HalfAnglePowers {
+  std::array<std::array<double, kMaxPolyDegree + 1>, Trig::kMaxDegree + 1> re{}, im{};
+};
+constexpr HalfAnglePowers half_angle_powers() {
+  HalfAnglePowers w;
+  std::array<double, kMaxPolyDegree + 1> re{}, im{};
+  re[0] = 1.0;
+  for (int j = 0; j <= Trig::kMaxDegree; ++j) {
+    if (j > 0)
+      for (int twice = 0; twice < 2; ++twice)
+        for (int i = 2 * j; i > 0; --i) {  // w[i] += i w[i - 1]
+          re[i] += 0.0 * re[i - 1] - 1.0 * im[i - 1];
+          im[i] += 0.0 * im[i - 1] + 1.0 * re[i - 1];
+        }
+    w.re[j] = re;
+    w.im[j] = im;
+  }
+  return w;
+}
+constexpr HalfAnglePowers kHalfAnglePowers = half_angle_powers();
+
+Poly to_half_angle(const Trig& f) {
+  const int n = f.degree();
+  // s = (1 + t^2)^{n - j}. Each coefficient Re(F_j w_j[i]) is the real part of a complex
+  // product, written out as the compiler does; w's zeros (whatever their sign) add nothing to
+  // a nonzero one, and a zero one is skipped.
+  const Binomials& s = kBinomials;
+  const HalfAnglePowers& w = kHalfAnglePowers;
   Poly p;
   p.size = 2 * n + 1;
   for (int j = 0; j <= n; ++j) {
-    if (j > 0)
-      for (int twice = 0; twice < 2; ++twice)
-        for (int i = 2 * j; i > 0; --i) w[i] += C(0.0, 1.0) * w[i - 1];
-    const C fj(f.a[j], -f.b[j]);
+    const double fj_re = f.a[j], fj_im = -f.b[j];
     const auto& sj = s[n - j];
     for (int i = 0; i <= 2 * j; ++i) {
-      const double c = (fj * w[i]).real();
+      const double c = fj_re * w.re[j][i] - fj_im * w.im[j][i];
       if (c == 0.0) continue;
       for (int k = 0; k <= 2 * (n - j); ++k) p.c[i + k] += c * sj[k];
     }
@@ -256,13 +367,14 @@ Poly to_half_angle(const Trig& f) {
   return p;
 }
 
-// A root of p in [lo, hi] where p(lo), p(hi) have opposite signs: Newton steps kept inside
-// the shrinking bracket, bisection when a step leaves it.
-double refine_bracketed(const Poly& p, const Poly& dp, double lo, double hi) {
-  double flo = eval(p, lo);
+// A root of p in [lo, hi] where p(lo) = flo and p(hi) have opposite signs: Newton steps kept
+// inside the shrinking bracket, bisection when a step leaves it. Templated on p's size
+// (horner2).
+template <int N>
+double refine_sized(const Poly& p, const Poly& dp, double lo, double hi, double flo) {
   double t = 0.5 * (lo + hi);
   for (int it = 0; it < 100; ++it) {
-    const double ft = eval(p, t);
+    const auto [ft, d] = horner2<N>(p.c.data(), dp.c.data(), t, p.size);
     if (ft == 0.0) return t;
     if ((ft < 0.0) == (flo < 0.0)) {
       lo = t;
@@ -270,13 +382,24 @@ double refine_bracketed(const Poly& p, const Poly& dp, double lo, double hi) {
     } else {
       hi = t;
     }
-    const double d = eval(dp, t);
     double next = d != 0.0 ? t - ft / d : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     if (next == t || hi - lo <= 4.0 * std::numeric_limits<double>::epsilon()) return next;
     t = next;
   }
   return t;
+}
+
+template <int... N>
+constexpr auto refine_table(std::integer_sequence<int, N...>) {
+  return std::array<double (*)(const Poly&, const Poly&, double, double, double), sizeof...(N)>{
+      &refine_sized<N>...};
+}
+constexpr auto kRefine = refine_table(std::make_integer_sequence<int, kUnrolledSize + 1>{});
+
+double refine_bracketed(const Poly& p, const Poly& dp, double lo, double hi, double flo) {
+  if (p.size <= kUnrolledSize) return kRefine[p.size](p, dp, lo, hi, flo);
+  return refine_sized<-1>(p, dp, lo, hi, flo);
 }
 
 double evaluation_bound(const Poly& p, double t) {
@@ -308,7 +431,7 @@ void real_roots(const Poly& p, double lo, double hi, double touch, RootList& out
     if (f1 == 0.0) {
       out.push(x1);
     } else if (f0 != 0.0 && (f0 < 0.0) != (f1 < 0.0)) {
-      out.push(refine_bracketed(p, dp, x0, x1));
+      out.push(refine_bracketed(p, dp, x0, x1, f0));
     } else if (double_roots && i + 1 < turns.count &&
                std::fabs(f1) <= touch * evaluation_bound(p, x1)) {
       double_roots->push(x1);
@@ -334,9 +457,10 @@ constexpr double kMaxPolishStep = 1e-3;
 double polish_extremum(const Trig& f, double theta) {
   const Trig d1 = f.derivative(), d2 = d1.derivative();
   for (int it = 0; it < 8; ++it) {
-    const double s = d2(theta);
+    const double c1 = std::cos(theta), s1 = std::sin(theta);  // one pair for both
+    const double s = evaluate_at(d2, c1, s1);
     if (s == 0.0) break;
-    const double step = d1(theta) / s;
+    const double step = evaluate_at(d1, c1, s1) / s;
     if (!std::isfinite(step) || std::fabs(step) > kMaxPolishStep) break;
     theta -= step;
     if (std::fabs(step) <= std::numeric_limits<double>::epsilon()) break;
@@ -349,9 +473,10 @@ double polish_root(const Trig& f, double theta) {
   const Trig d1 = f.derivative();
   double last = std::numeric_limits<double>::infinity();
   for (int it = 0; it < 6; ++it) {
-    const double s = d1(theta);
+    const double c1 = std::cos(theta), s1 = std::sin(theta);  // one pair for both
+    const double s = evaluate_at(d1, c1, s1);
     if (s == 0.0) break;
-    const double step = f(theta) / s;
+    const double step = evaluate_at(f, c1, s1) / s;
     if (!std::isfinite(step) || std::fabs(step) >= last || std::fabs(step) > kMaxPolishStep) break;
     theta -= step;
     last = std::fabs(step);
@@ -366,17 +491,16 @@ double harmonic_size(const Trig& f, int j) {
 
 // a0 + a1 cos + b1 sin = a0 + A cos(theta - phi): theta = phi +- acos(-a0 / A); a double
 // root where |a0| = A to within `touch`.
-TrigRoots first_harmonic_roots(const Trig& f, double touch, double merge_angle) {
-  TrigRoots r;
+// Adds them to `r` (the caller's result, returned in place).
+void first_harmonic_roots(const Trig& f, double touch, double merge_angle, TrigRoots& r) {
   const double amplitude = harmonic_size(f, 1), phase = std::atan2(f.b[1], f.a[1]);
   const double c = -f.a[0] / amplitude;
-  if (std::fabs(c) > 1.0 + touch) return r;
+  if (std::fabs(c) > 1.0 + touch) return;
   const double spread = std::acos(std::clamp(c, -1.0, 1.0));
-  r.roots = {wrap_angle(phase - spread), wrap_angle(phase + spread)};
-  std::sort(r.roots.begin(), r.roots.end());
-  if (r.roots[1] - r.roots[0] <= merge_angle || r.roots[0] + kTwoPi - r.roots[1] <= merge_angle)
-    r.roots.pop_back();
-  return r;
+  double lo = wrap_angle(phase - spread), hi = wrap_angle(phase + spread);
+  if (hi < lo) std::swap(lo, hi);
+  r.roots.push_back(lo);
+  if (!(hi - lo <= merge_angle || lo + kTwoPi - hi <= merge_angle)) r.roots.push_back(hi);
 }
 
 }  // namespace
@@ -390,16 +514,20 @@ TrigRoots trig_roots(const Trig& raw, double zero_norm, double touch, double mer
   }
   // Harmonics that cancelled down to round-off (cos^2 + sin^2 in |P + R Q|^2) would raise
   // the degree for nothing.
+  // Above raw.top every harmonic is zero already.
   Trig f = raw;
   const double cancelled = std::max(kCancelledHarmonic * n, kNegligibleOfZero * zero_norm);
-  for (int j = 1; j <= Trig::kMaxDegree; ++j)
+  for (int j = 1; j <= f.top; ++j)
     if (harmonic_size(f, j) <= cancelled) f.a[j] = f.b[j] = 0.0;
   // No root when the constant term outweighs every harmonic together.
   double amplitude = 0.0;
-  for (int j = 1; j <= Trig::kMaxDegree; ++j) amplitude += harmonic_size(f, j);
+  for (int j = 1; j <= f.top; ++j) amplitude += harmonic_size(f, j);
   if (std::fabs(f.a[0]) > amplitude * (1.0 + touch) + touch * n) return r;
 
-  if (f.degree() == 1) return first_harmonic_roots(f, touch, merge_angle);
+  if (f.degree() == 1) {
+    first_harmonic_roots(f, touch, merge_angle, r);
+    return r;  // every return names r, which is then built in place
+  }
   // Two charts, each |t| <= 1: theta in [-pi/2, pi/2] directly, the rest half a turn away.
   for (int chart = 0; chart < 2; ++chart) {
     const Trig g = chart == 0 ? f : f.half_turned();
@@ -417,9 +545,9 @@ TrigRoots trig_roots(const Trig& raw, double zero_norm, double touch, double mer
   }
   std::sort(r.roots.begin(), r.roots.end());
   // Chart borders (theta = +-pi/2) are found twice.
-  r.roots.erase(std::unique(r.roots.begin(), r.roots.end(),
-                            [&](double x, double y) { return y - x <= merge_angle; }),
-                r.roots.end());
+  const double* last = std::unique(r.roots.begin(), r.roots.end(),
+                                   [&](double x, double y) { return y - x <= merge_angle; });
+  r.roots.resize(size_t(last - r.roots.begin()));
   return r;
 }
 

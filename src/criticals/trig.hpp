@@ -10,11 +10,19 @@
 #pragma once
 
 #include <array>
-#include <vector>
+#include <cmath>
+#include <cstddef>
 
 #include "cslice/geometry.hpp"
 
 namespace cslice {
+
+// cos(theta) and sin(theta), for evaluating several polynomials at one theta with one pair
+// (the values, so the results, are those of evaluating each at theta).
+struct TrigAngle {
+  double c = 1.0, s = 0.0;
+  explicit TrigAngle(double theta) : c(std::cos(theta)), s(std::sin(theta)) {}
+};
 
 // A real Fourier polynomial of degree <= kMaxDegree, in Fourier form: products use the
 // product-to-sum identities, so cos^2 + sin^2 cancels exactly up to round-off.
@@ -35,6 +43,7 @@ struct Trig {
   int degree() const;   // highest j with a nonzero coefficient (0 for constants and zero)
   double norm() const;  // largest coefficient magnitude
   double operator()(double theta) const;
+  double operator()(const TrigAngle& theta) const;
   Trig derivative() const;
   // G(phi) = F(phi + shift) for shift = 0 or pi (a half turn negates the odd harmonics).
   Trig half_turned() const;
@@ -59,14 +68,37 @@ TrigVec operator*(const Trig& s, const TrigVec& v);
 Trig dot(const TrigVec& u, const TrigVec& v);
 Trig cross(const TrigVec& u, const TrigVec& v);
 Vec2 evaluate(const TrigVec& v, double theta);
+Vec2 evaluate(const TrigVec& v, const TrigAngle& theta);
 
 // Real roots of f in [-pi, pi), sorted. A root is a sign change, polished to full
 // precision, or a local extremum where |f| <= touch * f.norm(): a double root (a grazing
 // contact) that a sign test would miss. Returns no roots when f is identically zero
 // relative to `zero_norm` (f.norm() <= zero_norm): the condition then holds for every theta
 // and marks a permanent coincidence, not a critical orientation.
+// At most this many roots: two charts, each with its simple and its double roots.
+inline constexpr int kMaxTrigRoots = 4 * (2 * Trig::kMaxDegree + 1);
+// Fixed capacity, no allocation: thousands of equations are solved per pair of parts.
+class TrigRootList {
+ public:
+  void push_back(double theta) {
+    if (count_ < kMaxTrigRoots) roots_[count_++] = theta;
+  }
+  void pop_back() { --count_; }
+  void resize(size_t n) { count_ = int(n); }
+  size_t size() const { return size_t(count_); }
+  bool empty() const { return count_ == 0; }
+  double* begin() { return roots_.data(); }
+  double* end() { return roots_.data() + count_; }
+  const double* begin() const { return roots_.data(); }
+  const double* end() const { return roots_.data() + count_; }
+  double operator[](size_t i) const { return roots_[i]; }
+
+ private:
+  std::array<double, kMaxTrigRoots> roots_;
+  int count_ = 0;
+};
 struct TrigRoots {
-  std::vector<double> roots;
+  TrigRootList roots;
   bool identically_zero = false;
 };
 // Roots closer than merge_angle are reported once.
