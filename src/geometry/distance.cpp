@@ -5,8 +5,10 @@
 // routine evaluates exactly those candidates, so it is exact up to round-off; curves that
 // meet (found by the intersection routine with no tolerance) are at distance 0.
 #include <algorithm>
+#include <limits>
 
 #include "cslice/geometry.hpp"
+#include "geometry/near_curve.hpp"
 
 namespace cslice {
 namespace {
@@ -30,6 +32,46 @@ double distance_to_curve(const Curve& c, Vec2 p) {
   if (rho == 0.0) return c.radius;
   if (on_arc(c, p)) return std::fabs(rho - c.radius);
   return std::min(distance(p, c.from), distance(p, c.to));
+}
+
+// A segment's computed distance is |p - q| for q = lerp(from, to, t) (or an end), and q lies
+// outside the ends' box by at most 4u(|a| + |b|) per axis (u = DBL_EPSILON / 2; a, b the
+// ends' coordinates on that axis): two roundings in t (b - a), one in the sum. The computed
+// |p - q| is at least (1 - u)^3 times the exact difference along one axis (one rounding in
+// that difference, one in its square, one in the square root, squares and sums rounded
+// monotonically). So a gap g to the box, itself computed with one rounding, proves a
+// computed distance above eps when g > eps + 16u (eps + S), S the sum of the ends' absolute
+// coordinates: the 16u covers the 4u of q, the (1 - u)^-3 and (1 + u) factors on eps, and
+// the three roundings of the threshold itself, with room to spare. This needs squares of
+// differences above eps not to underflow, and the rounding of t (b - a) in the subnormal
+// range (below 2^-1074) to stay under u eps: true for eps >= 2^-500 (the pair's geometric
+// epsilon is 1e-9 of its size); a smaller eps takes the exact path.
+bool segment_box_rejects(const Curve& c, Vec2 p, double eps) {
+  constexpr double kMargin = 8.0 * std::numeric_limits<double>::epsilon();  // 16u
+  constexpr double kSmallestEps = 0x1p-500;
+  if (!(eps >= kSmallestEps)) return false;
+  const Vec2 a = c.from, b = c.to;
+  const double scale = std::fabs(a.x) + std::fabs(b.x) + std::fabs(a.y) + std::fabs(b.y);
+  const double limit = eps + kMargin * (eps + scale);
+  // NaN anywhere fails every comparison: not rejected, the exact path decides.
+  return std::min(a.x, b.x) - p.x > limit || p.x - std::max(a.x, b.x) > limit ||
+         std::min(a.y, b.y) - p.y > limit || p.y - std::max(a.y, b.y) > limit;
+}
+
+// distance_to_curve returns one of the values computed here (on an arc: |rho - r| when p's
+// angle is on the arc, else the nearer end's distance, or r when rho is 0, which is |rho - r|
+// too), by the same expressions: when all of them exceed eps, so does the one it returns,
+// and its angle (atan2, most of its cost) is not needed. A segment is first tried against
+// its box (segment_box_rejects), then measured.
+bool within_distance(const Curve& c, Vec2 p, double eps) {
+  if (c.is_segment()) return !segment_box_rejects(c, p, eps) && distance_to_curve(c, p) <= eps;
+  const Vec2 r = p - c.center;
+  const double rho = length(r);
+  if (rho == 0.0) return c.radius <= eps;
+  const double radial = std::fabs(rho - c.radius);
+  const double ends = std::min(distance(p, c.from), distance(p, c.to));
+  if (radial > eps && ends > eps) return false;
+  return (on_arc(c, p) ? radial : ends) <= eps;
 }
 
 // The same steps as closest_parameter and distance_to_curve, sharing the arc's angle.

@@ -14,7 +14,6 @@
 #include "contacts/contact_features.hpp"
 #include "cslice/classify.hpp"
 #include "cslice/slice.hpp"
-#include "parts/loop_queries.hpp"
 #include "slice/arrangement.hpp"
 #include "slice/face_sample.hpp"
 
@@ -314,21 +313,6 @@ class SliceBuilder {
 };
 
 }  // namespace
-
-int Slice::locate(Vec2 p) const {
-  // Even-odd over all boundary cycles of a component: the parity of their union.
-  for (const FreeComponent& c : free_components) {
-    bool inside = !c.bounded;
-    for (const auto& cycle : c.boundary) {
-      for (const ContactPiece& piece : cycle) {
-        if (distance_to_curve(piece.curve, p) <= epsilon) return -1;
-        if (toggles_parity(piece.curve, p)) inside = !inside;
-      }
-    }
-    if (inside) return c.id;
-  }
-  return -1;
-}
 
 std::vector<int> realizable_segments(const Slice& slice) {
   std::vector<int> ids = slice.contact_graph.nodes;
