@@ -36,6 +36,8 @@ class PlacementTester {
 
  private:
   void place(const Pose& pose);
+  void place_edge(size_t i);  // moving edge i and its box, once per placement
+  void place_all();           // every moving edge, and the moving part's box
   // Whether the placed moving part comes within the contact tolerance of the fixed part's box.
   bool within_reach() const;
   bool interiors_overlap();
@@ -54,6 +56,13 @@ class PlacementTester {
   std::vector<Box> moving_boxes_;
   Box moving_box_;
   Transform placement_;
+  std::vector<unsigned> placed_at_;  // per moving edge, the placement_count_ it was placed for
+  unsigned placement_count_ = 1;
+  bool boxed_ = false;  // moving_box_ is the union of every placed box
+  // The moving edge that settled the last blocked placement: tried first next time, since
+  // the placements tested in a row are mostly near each other. The answer does not depend
+  // on the order (interiors_overlap).
+  size_t first_edge_ = 0;
   std::unique_ptr<Indexes> indexes_;  // of the fixed part, and of the moving body
   std::vector<std::vector<double>> moving_splits_, fixed_splits_;  // reused scratch
 };

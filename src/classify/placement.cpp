@@ -31,46 +31,8 @@ std::string_view to_string(Placement p) {
   return "?";
 }
 
-// The indexes, and how much of the current placement is done: the moving edges are placed
-// lazily, each when first needed (a blocked placement usually settles on an edge or two),
-// and their box once all are. The placement state it updates is the tester's own (which
-// never moves: it cannot be copied), kept here so that the public header stays as it is.
 struct PlacementTester::Indexes {
   RowIndex fixed, body;
-  const Transform* placement = nullptr;
-  const std::vector<Curve>* body_edges = nullptr;
-  std::vector<Curve>* edges = nullptr;
-  std::vector<Box>* boxes = nullptr;
-  Box* box = nullptr;
-  std::vector<unsigned> placed_at;  // per moving edge, the placement it was placed for
-  unsigned placement_count = 1;
-  bool boxed = false;  // *box is the union of all the placed boxes
-  // The moving edge that settled the last blocked placement: tried first next time, since
-  // the placements tested in a row are mostly near each other. The answer does not depend
-  // on the order (interiors_overlap).
-  size_t first_edge = 0;
-
-  void reset() {
-    if (++placement_count == 0) {  // wrapped: no stale mark may match
-      std::fill(placed_at.begin(), placed_at.end(), 0u);
-      placement_count = 1;
-    }
-    boxed = false;
-  }
-  void place(size_t i) {
-    if (placed_at[i] == placement_count) return;
-    placed_at[i] = placement_count;
-    (*edges)[i] = transformed((*body_edges)[i], *placement);
-    (*boxes)[i] = bounding_box((*edges)[i]);
-  }
-  // The union in edge order, as an eager placement builds it (even the signs of zeros agree).
-  void complete() {
-    if (boxed) return;
-    for (size_t i = 0; i < body_edges->size(); ++i) place(i);
-    *box = Box{};
-    for (const Box& b : *boxes) box->add(b);
-    boxed = true;
-  }
 };
 
 PlacementTester::PlacementTester(const Pair& pair) : pair_(pair) {
@@ -78,15 +40,8 @@ PlacementTester::PlacementTester(const Pair& pair) : pair_(pair) {
     fixed_edges_.insert(fixed_edges_.end(), loop.edges.begin(), loop.edges.end());
   for (const Loop& loop : pair.moving.loops)
     body_edges_.insert(body_edges_.end(), loop.edges.begin(), loop.edges.end());
-  indexes_ = std::make_unique<Indexes>();
-  indexes_->fixed = RowIndex(fixed_edges_);
-  indexes_->body = RowIndex(body_edges_);
-  indexes_->placement = &placement_;
-  indexes_->body_edges = &body_edges_;
-  indexes_->edges = &moving_edges_;
-  indexes_->boxes = &moving_boxes_;
-  indexes_->box = &moving_box_;
-  indexes_->placed_at.assign(body_edges_.size(), 0u);
+  indexes_ = std::make_unique<Indexes>(Indexes{RowIndex(fixed_edges_), RowIndex(body_edges_)});
+  placed_at_.assign(body_edges_.size(), 0u);
   moving_edges_.resize(body_edges_.size());
   moving_boxes_.resize(body_edges_.size());
   moving_splits_.resize(body_edges_.size());
@@ -95,9 +50,31 @@ PlacementTester::PlacementTester(const Pair& pair) : pair_(pair) {
 
 PlacementTester::~PlacementTester() = default;
 
+// The moving edges are placed lazily, each when first needed (a blocked placement usually
+// settles on an edge or two), and their box once all are.
 void PlacementTester::place(const Pose& pose) {
   placement_ = Transform(pose);
-  indexes_->reset();
+  if (++placement_count_ == 0) {  // wrapped: no stale mark may match
+    std::fill(placed_at_.begin(), placed_at_.end(), 0u);
+    placement_count_ = 1;
+  }
+  boxed_ = false;
+}
+
+void PlacementTester::place_edge(size_t i) {
+  if (placed_at_[i] == placement_count_) return;
+  placed_at_[i] = placement_count_;
+  moving_edges_[i] = transformed(body_edges_[i], placement_);
+  moving_boxes_[i] = bounding_box(moving_edges_[i]);
+}
+
+// The union in edge order, as an eager placement builds it (even the signs of zeros agree).
+void PlacementTester::place_all() {
+  if (boxed_) return;
+  for (size_t i = 0; i < body_edges_.size(); ++i) place_edge(i);
+  moving_box_ = Box{};
+  for (const Box& b : moving_boxes_) moving_box_.add(b);
+  boxed_ = true;
 }
 
 namespace {
@@ -147,10 +124,10 @@ bool PlacementTester::interiors_overlap() {
   const double eps = pair_.tol.geometric;
   for (auto& s : moving_splits_) s.clear();
   for (auto& s : fixed_splits_) s.clear();
-  const size_t n = moving_edges_.size(), first = indexes_->first_edge;
+  const size_t n = moving_edges_.size(), first = first_edge_;
   for (size_t k = 0; k < n; ++k) {
     const size_t i = first + k < n ? first + k : first + k - n;
-    indexes_->place(i);
+    place_edge(i);
     bool same_side = false;
     indexes_->fixed.for_each_meeting(moving_boxes_[i].inflated(eps), [&](int j) {
       const Intersection x = intersect(moving_edges_[i], fixed_edges_[j], eps);
@@ -161,12 +138,12 @@ bool PlacementTester::interiors_overlap() {
       }
     });
     if (same_side || piece_inside_other(moving_edges_[i], moving_splits_[i], true)) {
-      indexes_->first_edge = i;
+      first_edge_ = i;
       return true;
     }
   }
   // A fixed edge away from the (bounded) moving part has no piece inside it.
-  indexes_->complete();
+  place_all();
   bool inside = false;
   indexes_->fixed.for_each_meeting(moving_box_.inflated(eps), [&](int j) {
     inside = inside || piece_inside_other(fixed_edges_[j], fixed_splits_[j], false);
@@ -186,7 +163,7 @@ bool PlacementTester::boundaries_within(double distance_limit) const {
 
 Placement PlacementTester::classify(const Pose& pose) {
   if (blocked(pose)) return Placement::blocked;
-  indexes_->complete();
+  place_all();
   if (!within_reach()) return Placement::free;
   return boundaries_within(pair_.tol.contact) ? Placement::contact : Placement::free;
 }
@@ -198,12 +175,12 @@ bool PlacementTester::blocked(const Pose& pose) {
   // (in floating point too): if it reaches the fixed part, so does the part.
   bool reach = false;
   if (!body_edges_.empty()) {
-    const size_t first = indexes_->first_edge;
-    indexes_->place(first);
+    const size_t first = first_edge_;
+    place_edge(first);
     reach = moving_boxes_[first].inflated(pair_.tol.contact).overlaps(pair_.fixed.box);
   }
   if (!reach) {
-    indexes_->complete();
+    place_all();
     if (!within_reach()) return pair_.fixed.enclosure;
   }
   return interiors_overlap();
@@ -215,7 +192,7 @@ bool PlacementTester::within_reach() const {
 
 double PlacementTester::boundary_distance(const Pose& pose) {
   place(pose);
-  indexes_->complete();
+  place_all();
   double best = std::numeric_limits<double>::infinity();
   for (const Curve& m : moving_edges_)
     for (const Curve& f : fixed_edges_) best = std::min(best, distance_between(m, f));
