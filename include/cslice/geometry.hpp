@@ -126,6 +126,14 @@ inline double fmod_two_pi(double a) {
   return std::fmod(a, kTwoPi);  // exactly one or two turns (a signed zero), more, or NaN
 }
 
+// How far angle `to` lies counterclockwise from angle `from`, in [0, 2pi] (a remainder just
+// below zero rounds up to 2pi itself): where angle intervals and arcs place an angle.
+inline double ccw_turn(double from, double to) {
+  double d = fmod_two_pi(to - from);
+  if (d < 0.0) d += kTwoPi;
+  return d;
+}
+
 // A boundary edge, directed from `from` to `to`: a line segment (bulge 0) or a circular arc
 // (bulge = tan(sweep / 4), positive counterclockwise). A full circle has from == to and
 // sweep = +-2pi. Parameter t in [0, 1] runs uniformly in arc length from `from` to `to`.
@@ -155,13 +163,28 @@ Curve make_circle(Vec2 center, double radius, bool counterclockwise = true);
 Curve reversed(const Curve& c);
 Curve transformed(const Curve& c, const Transform& t);
 
-Vec2 point_at(const Curve& c, double t);
+// Inline: called for nearly every split point of a slice, most of them a curve's end.
+inline Vec2 point_at(const Curve& c, double t) {
+  if (t == 0.0) return c.from;
+  if (t == 1.0) return c.to;
+  if (c.is_segment()) return lerp(c.from, c.to, t);
+  return c.center + c.radius * unit_vector(c.start_angle + t * c.sweep);
+}
 // Unit tangent in the direction of travel at parameter t.
 Vec2 tangent_at(const Curve& c, double t);
 // Signed curvature: +1/r for counterclockwise arcs, -1/r for clockwise arcs, 0 for segments.
 double signed_curvature(const Curve& c);
 double curve_length(const Curve& c);
-Box bounding_box(const Curve& c);
+// The box of an arc: its ends and the extreme points of its circle that it passes.
+Box arc_bounding_box(const Curve& c);
+// Inline for segments: a slice takes the box of every contact curve and every edge.
+inline Box bounding_box(const Curve& c) {
+  if (!c.is_segment()) return arc_bounding_box(c);
+  Box b;
+  b.add(c.from);
+  b.add(c.to);
+  return b;
+}
 // Signed area between the curve and the origin: summing over a closed loop gives the area
 // it encloses (positive for counterclockwise loops).
 double signed_area_contribution(const Curve& c);

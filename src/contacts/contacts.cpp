@@ -70,8 +70,7 @@ namespace {
 // Angle intervals are [lo, lo + span] counterclockwise, span in [0, 2pi].
 bool interval_contains(const AngleInterval& a, double angle, double angular_eps) {
   if (a.span >= kTwoPi) return true;
-  double d = fmod_two_pi(angle - a.lo);
-  if (d < 0.0) d += kTwoPi;
+  const double d = ccw_turn(a.lo, angle);
   return d <= a.span + angular_eps || d >= kTwoPi - angular_eps;
 }
 
@@ -86,8 +85,7 @@ int intersect_intervals(const AngleInterval& a, const AngleInterval& b, double a
     out[0] = a;
     return 1;
   }
-  double d = fmod_two_pi(b.lo - a.lo);
-  if (d < 0.0) d += kTwoPi;
+  const double d = ccw_turn(a.lo, b.lo);
   int n = 0;
   for (double shift : {d, d - kTwoPi}) {
     const double lo = std::max(0.0, shift), hi = std::min(a.span, shift + b.span);

@@ -373,8 +373,7 @@ void MeetingTask::add_run(int first, int last) {
 
 bool MeetingTask::near(const Binning& binning, double theta, double slack) const {
   for (int r = 0; r < run_count; ++r) {
-    double d = fmod_two_pi(theta - binning.lower(runs[r][0]));
-    if (d < 0.0) d += kTwoPi;
+    const double d = ccw_turn(binning.lower(runs[r][0]), theta);
     const double span = (runs[r][1] - runs[r][0] + 1) * binning.width;
     if (d <= span + slack || d >= kTwoPi - slack) return true;
   }

@@ -53,8 +53,7 @@ double moving_point_speed(const ContactFamily& f) {
       std::max(length(c + rho * unit_vector(n.lo)), length(c + rho * unit_vector(n.lo + n.span)));
   // The farthest point of the whole circle from the origin, if the normals reach it.
   double far = std::atan2(c.y, c.x) + (rho < 0.0 ? kPi : 0.0);
-  double d = fmod_two_pi(far - n.lo);
-  if (d < 0.0) d += kTwoPi;
+  const double d = ccw_turn(n.lo, far);
   if (is_full(n) || d <= n.span) v = std::max(v, length(c) + std::fabs(rho));
   return v;
 }
@@ -116,16 +115,14 @@ std::vector<ContactFamily> contact_families(const Pair& pair) {
 
 bool alive_at(const ContactFamily& family, double theta, double slack) {
   if (family.always_alive()) return true;
-  double d = fmod_two_pi(theta - family.alive.lo);
-  if (d < 0.0) d += kTwoPi;
+  const double d = ccw_turn(family.alive.lo, theta);
   return d <= family.alive.span + slack || d >= kTwoPi - slack;
 }
 
 // Whether [lo, hi] meets the family's alive interval (both taken around the circle).
 bool alive_within(const ContactFamily& family, double lo, double hi) {
   if (family.always_alive()) return true;
-  double d = fmod_two_pi(family.alive.lo - lo);
-  if (d < 0.0) d += kTwoPi;
+  const double d = ccw_turn(lo, family.alive.lo);
   // The alive interval starts d after lo: inside [lo, hi], or began before lo and lasts.
   return d <= hi - lo || d + family.alive.span >= kTwoPi;
 }
@@ -163,8 +160,7 @@ AngleInterval widened(const AngleInterval& a, double by) {
 std::optional<AngleInterval> meeting(const AngleInterval& a, const AngleInterval& b) {
   if (is_full(a)) return b;
   if (is_full(b)) return a;
-  double d = fmod_two_pi(b.lo - a.lo);  // where b starts, seen from a.lo
-  if (d < 0.0) d += kTwoPi;
+  const double d = ccw_turn(a.lo, b.lo);  // where b starts, seen from a.lo
   if (d <= a.span) {
     if (d + b.span > kTwoPi) return std::nullopt;  // b wraps back into a: two pieces
     return AngleInterval{a.lo + d, std::min(a.span - d, b.span)};

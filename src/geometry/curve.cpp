@@ -87,13 +87,6 @@ Curve transformed(const Curve& c, const Transform& t) {
   return r;
 }
 
-Vec2 point_at(const Curve& c, double t) {
-  if (t == 0.0) return c.from;
-  if (t == 1.0) return c.to;
-  if (c.is_segment()) return lerp(c.from, c.to, t);
-  return c.center + c.radius * unit_vector(c.start_angle + t * c.sweep);
-}
-
 Vec2 tangent_at(const Curve& c, double t) {
   if (c.is_segment()) return normalized(c.to - c.from);
   const Vec2 radial = unit_vector(c.start_angle + t * c.sweep);
@@ -138,11 +131,10 @@ const std::array<AxisDirection, 4>& axis_directions() {
 
 }  // namespace
 
-Box bounding_box(const Curve& c) {
+Box arc_bounding_box(const Curve& c) {
   Box b;
   b.add(c.from);
   b.add(c.to);
-  if (c.is_segment()) return b;
   for (const AxisDirection& axis : axis_directions()) {
     const double t = arc_parameter_of_angle(c, axis.angle);
     if (t >= 0.0 && t <= 1.0) b.add(c.center + c.radius * axis.unit);

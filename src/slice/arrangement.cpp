@@ -321,8 +321,7 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
   // A segment's tangent is the same everywhere: computed once per curve (`direction`).
   Vec2 direction;
   auto on_curve = [&](const Curve& c, double t) {
-    if (c.is_segment())  // point_at, inline
-      return OnCurve{t == 0.0 ? c.from : t == 1.0 ? c.to : lerp(c.from, c.to, t), direction};
+    if (c.is_segment()) return OnCurve{point_at(c, t), direction};
     const Vec2 radial = unit_vector(c.start_angle + t * c.sweep);
     const Vec2 p = t == 0.0 ? c.from : t == 1.0 ? c.to : c.center + c.radius * radial;
     return OnCurve{p, c.sweep > 0.0 ? perp_left(radial) : perp_right(radial)};
@@ -471,7 +470,7 @@ void trace_cycles(Arrangement& arr, Scratch& s) {
   box.resize(arr.edges.size());
   for (size_t e = 0; e < arr.edges.size(); ++e) {
     area[e] = signed_area_contribution(arr.edges[e].curve);
-    box[e] = curve_box(arr.edges[e].curve);
+    box[e] = bounding_box(arr.edges[e].curve);
   }
   arr.cycle_of.assign(n, -1);
   arr.cycle_half_edges.reserve(n);

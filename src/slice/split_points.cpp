@@ -18,14 +18,6 @@ void SplitsByCurve::build(const std::vector<SplitPoint>& splits, size_t first, s
 
 namespace {
 
-// point_at, inline: called for nearly every split point, most of them a curve's end.
-Vec2 point_on(const Curve& c, double t) {
-  if (t == 0.0) return c.from;
-  if (t == 1.0) return c.to;
-  if (c.is_segment()) return lerp(c.from, c.to, t);
-  return c.center + c.radius * unit_vector(c.start_angle + t * c.sweep);
-}
-
 // Every pair of curves whose boxes overlap, found by sweeping boxes sorted by their left x.
 void candidate_pairs(SplitScratch& s) {
   const std::vector<Box>& boxes = s.boxes;
@@ -74,7 +66,7 @@ void share_split_points(const std::vector<Curve>& curves, SplitScratch& s,
     }
     // Where a point is on its own curve costs a sine and cosine on an arc: found when asked.
     auto on_curve = [&](FreshSplit& p) {
-      if (!p.located) p.on_curve = point_on(curves[p.curve], p.t);
+      if (!p.located) p.on_curve = point_at(curves[p.curve], p.t);
       p.located = true;
       return p.on_curve;
     };
@@ -124,7 +116,7 @@ void split_points(const std::vector<Curve>& curves, double eps, SplitScratch& s,
   for (size_t i = 0; i < curves.size(); ++i) {
     splits.push_back({int(i), 0.0, curves[i].from});
     splits.push_back({int(i), 1.0, curves[i].to});
-    s.boxes.push_back(curve_box(curves[i]).inflated(eps));
+    s.boxes.push_back(bounding_box(curves[i]).inflated(eps));
   }
   candidate_pairs(s);
   for (auto [i, j] : s.pairs) {

@@ -69,15 +69,6 @@ struct SplitScratch {
   }
 };
 
-// The box of a curve, as bounding_box gives it, without the call for a segment.
-inline Box curve_box(const Curve& c) {
-  if (!c.is_segment()) return bounding_box(c);
-  Box b;
-  b.add(c.from);
-  b.add(c.to);
-  return b;
-}
-
 // Replaces `splits` with the split points of `curves` (each curve's two ends first, in curve
 // order, then the meetings of candidate pairs, then the shared points).
 void split_points(const std::vector<Curve>& curves, double eps, SplitScratch& scratch,
