@@ -380,6 +380,15 @@ bool MeetingTask::near(const Binning& binning, double theta, double slack) const
   return false;
 }
 
+int MeetingTask::windows(const Binning& binning, double slack,
+                         std::array<AngleWindow, 2>& out) const {
+  for (int r = 0; r < run_count; ++r) {
+    const double span = (runs[r][1] - runs[r][0] + 1) * binning.width;
+    out[size_t(r)] = {binning.lower(runs[r][0]) + 0.5 * span, 0.5 * span + 2.0 * slack};
+  }
+  return run_count;
+}
+
 namespace {
 bool same_family_set(const MeetingTask& t, const MeetingCandidate& m) {
   return t.a == m.a && t.b == m.b && t.c == m.c;

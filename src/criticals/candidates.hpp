@@ -77,6 +77,9 @@ struct MeetingTask {
   void add_bin(int bin) { add_run(bin, bin); }
   // Whether theta lies in one of the runs, widened by `slack` radians.
   bool near(const Binning& binning, double theta, double slack) const;
+  // The runs as windows of orientations, each widened by twice `slack` (once for `near`,
+  // once for a root's own round-off): roots outside them would all be culled.
+  int windows(const Binning& binning, double slack, std::array<AngleWindow, 2>& out) const;
 };
 
 // Sorted by (a, b, c); `candidates` is sorted on the way.

@@ -139,7 +139,7 @@ class Worker {
 
   void solve_triple(const MeetingTask& t) {
     const auto& eq = ctx_.equations;
-    for (double theta : roots(triple_equation(eq[t.a], eq[t.b], eq[t.c]), t))
+    for (double theta : roots(triple_equation(eq[t.a], eq[t.b], eq[t.c]), t, true))
       add_triple(t.a, t.b, t.c, theta);
   }
 
@@ -167,14 +167,21 @@ class Worker {
  private:
   // The roots near the task's bins, in a buffer reused by the next call (validating a root
   // solves nothing, so a caller's loop over them is never disturbed).
-  const std::vector<double>& roots(const EventEquation& eq, const MeetingTask& task) {
+  // A triple's equation (degree 2 or 3) is searched only near the task's bins; a pair's
+  // (degree 1) is solved in closed form over the whole turn.
+  const std::vector<double>& roots(const EventEquation& eq, const MeetingTask& task,
+                                   bool triple = false) {
     ++stats.equations;
-    const TrigRoots r = trig_roots(eq.f, kRelativeGeometricEpsilon * eq.magnitude,
-                                   kRelativeGeometricEpsilon, ctx_.pair.tol.angular);
+    const double slack = ctx_.pair.tol.critical_angle;
+    std::array<AngleWindow, 2> windows;
+    const int count = triple ? task.windows(ctx_.binning, slack, windows) : 0;
+    const TrigRoots r =
+        trig_roots_within(eq.f, kRelativeGeometricEpsilon * eq.magnitude, kRelativeGeometricEpsilon,
+                          ctx_.pair.tol.angular, triple ? windows.data() : nullptr, count);
     stats.roots += long(r.roots.size());
     near_.clear();
     for (double theta : r.roots) {
-      if (task.near(ctx_.binning, theta, ctx_.pair.tol.critical_angle))
+      if (task.near(ctx_.binning, theta, slack))
         near_.push_back(theta);
       else
         ++stats.culled;

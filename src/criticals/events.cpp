@@ -23,17 +23,63 @@ Linear minus_circle(const FamilyEquation& e, const FamilyEquation& g) {
 
 }  // namespace
 
-EventEquation endpoint_equation(const MovingPoint& end, const FamilyEquation& b) {
-  const TrigVec x = rotating_point(end.p, end.q);
-  if (b.circle) {
-    const TrigVec d = x - b.point;
-    const Trig dd = dot(d, d), rr = Trig::constant(b.radius * b.radius);
-    return {dd - rr, norm_sum({&dd, &rr})};
+// The pair equations are all of degree 1 and are written in closed form from the moving
+// points: with X - Y = A + R(theta) B for two moving points X, Y, and R v . B expanded,
+//   |A + R B|^2 = |A|^2 + |B|^2 + 2 (A . B) cos - 2 (A x B) sin,
+//   m . (A + R B) = m . A + (m . B) cos - (m x B) sin           (m a fixed unit normal),
+//   R v . (A + R B) = v . B + (A . v) cos - (A x v) sin          (a turning one).
+// The same equations built by multiplying trigonometric polynomials leave degree-2 terms
+// that cancel only to round-off, and cost ten times as much. Each magnitude is the largest
+// term it sums, as trig_roots' identically-zero test expects.
+namespace {
+
+EventEquation first_harmonic(double constant, double cosine, double sine, double magnitude) {
+  Trig f;
+  f.a[0] = constant;
+  f.a[1] = cosine;
+  f.b[1] = sine;
+  f.top = 1;
+  return {f, magnitude};
+}
+
+double largest(double a, double b, double c) {
+  return std::max({std::fabs(a), std::fabs(b), std::fabs(c)});
+}
+
+// |X - C|^2 - r^2 for the moving point X and circle centre C.
+EventEquation distance_equation(const MovingPoint& x, const MovingPoint& centre, double r) {
+  const Vec2 a = x.p - centre.p, b = x.q - centre.q;
+  const double square = dot(a, a) + dot(b, b), along = 2.0 * dot(a, b), across = -2.0 * cross(a, b);
+  return first_harmonic(square - r * r, along, across, largest(square, along, across) + r * r);
+}
+
+// The coefficients of n . (X - p) for a line of normal n through p, the moving point X
+// standing for A + R B (see above).
+std::array<double, 3> line_terms(const FamilyEquation& line, Vec2 a, Vec2 b) {
+  const Vec2 v = line.unit_normal;
+  if (line.turning) return {dot(v, b), dot(a, v), -cross(a, v)};
+  return {dot(v, a), dot(v, b), -cross(v, b)};
+}
+
+// n . (X - p) - offset. Its magnitude is that of the difference, or (`parts`) of n . X and
+// n . p apart: an end on a line compares two points each given in its own frame, and a
+// permanent coincidence there cancels only to the round-off of their own sizes.
+EventEquation line_equation(const MovingPoint& x, const FamilyEquation& line, double offset,
+                            bool parts) {
+  const auto [fixed, along, across] = line_terms(line, x.p - line.anchor.p, x.q - line.anchor.q);
+  double magnitude = largest(fixed, along, across);
+  if (parts) {
+    const auto [x0, x1, x2] = line_terms(line, x.p, x.q);
+    const auto [p0, p1, p2] = line_terms(line, line.anchor.p, line.anchor.q);
+    magnitude = largest(x0, x1, x2) + largest(p0, p1, p2);
   }
-  // n . (x - p) as n . x - n . p, where -n . p is the line's own b (family_equation), the
-  // same bits as recomputing it: negation is exact, and x - y is x + (-y).
-  const Trig along = dot(b.normal, x);
-  return {along + b.b, norm_sum({&along, &b.b})};
+  return first_harmonic(fixed - offset, along, across, magnitude + std::fabs(offset));
+}
+
+}  // namespace
+
+EventEquation endpoint_equation(const MovingPoint& end, const FamilyEquation& b) {
+  return b.circle ? distance_equation(end, b.anchor, b.radius) : line_equation(end, b, 0.0, true);
 }
 
 int tangent_equations(const FamilyEquation& a, const FamilyEquation& b,
@@ -41,25 +87,16 @@ int tangent_equations(const FamilyEquation& a, const FamilyEquation& b,
   if (!a.circle && !b.circle) return 0;
   if (a.circle && b.circle) {
     if (a.radius == 0.0 || b.radius == 0.0) return 0;  // a point on a curve: an endpoint event
-    const TrigVec d = a.point - b.point;
-    const Trig dd = dot(d, d);
-    int n = 0;
-    for (double r : {a.radius + b.radius, std::fabs(a.radius - b.radius)}) {
-      const Trig rr = Trig::constant(r * r);
-      out[n++] = {dd - rr, norm_sum({&dd, &rr})};
-    }
-    return n;
+    out[0] = distance_equation(a.anchor, b.anchor, a.radius + b.radius);
+    out[1] = distance_equation(a.anchor, b.anchor, std::fabs(a.radius - b.radius));
+    return 2;
   }
   const FamilyEquation& line = a.circle ? b : a;
   const FamilyEquation& circle = a.circle ? a : b;
   if (circle.radius == 0.0) return 0;
-  const Trig reach = dot(line.normal, circle.point - line.point);
-  int n = 0;
-  for (double r : {circle.radius, -circle.radius}) {
-    const Trig rr = Trig::constant(r);
-    out[n++] = {reach - rr, norm_sum({&reach, &rr})};
-  }
-  return n;
+  out[0] = line_equation(circle.anchor, line, circle.radius, false);
+  out[1] = line_equation(circle.anchor, line, -circle.radius, false);
+  return 2;
 }
 
 EventEquation triple_equation(const FamilyEquation& a, const FamilyEquation& b,

@@ -196,6 +196,7 @@ FamilyEquation family_equation(const ContactFamily& family) {
   FamilyEquation e;
   if (family.shape == FamilyShape::circle) {
     e.circle = true;
+    e.anchor = family.center;
     e.point = rotating_point(family.center.p, family.center.q);
     e.radius = family.radius;
     e.a = Trig::constant(-2.0) * e.point;
@@ -204,22 +205,19 @@ FamilyEquation family_equation(const ContactFamily& family) {
   }
   const MovingPoint& from = family.ends[0];
   const MovingPoint& to = family.ends[1];
+  e.anchor = from;
   e.point = rotating_point(from.p, from.q);
-  if (family.shape == FamilyShape::fixed_line)
-    e.normal = constant_vec(normalized(perp_left(to.p - from.p)));
-  else
-    e.normal = rotating_point({0.0, 0.0}, normalized(perp_left(to.q - from.q)));
+  e.turning = family.shape == FamilyShape::turning_line;
+  if (e.turning) {
+    e.unit_normal = normalized(perp_left(to.q - from.q));
+    e.normal = rotating_point({0.0, 0.0}, e.unit_normal);
+  } else {
+    e.unit_normal = normalized(perp_left(to.p - from.p));
+    e.normal = constant_vec(e.unit_normal);
+  }
   e.a = e.normal;
   e.b = -dot(e.normal, e.point);
   return e;
-}
-
-Trig evaluate_equation(const FamilyEquation& e, const TrigVec& x) {
-  if (e.circle) {
-    const TrigVec d = x - e.point;
-    return dot(d, d) - Trig::constant(e.radius * e.radius);
-  }
-  return dot(e.normal, x - e.point);
 }
 
 }  // namespace cslice

@@ -90,9 +90,12 @@ struct FamilyEquation {
   // For lines: a point on it and its unit normal; for circles: the centre and radius.
   TrigVec point, normal;
   double radius = 0.0;
+  // The same as moving points, for the pair equations' closed forms (events.cpp): the
+  // centre or the line's point, and the unit normal, fixed or (turning) R(theta) `unit_normal`.
+  MovingPoint anchor;
+  Vec2 unit_normal;
+  bool turning = false;
 };
 FamilyEquation family_equation(const ContactFamily& family);
-// g(X) for the family's curve at the moving point X.
-Trig evaluate_equation(const FamilyEquation& e, const TrigVec& x);
 
 }  // namespace cslice

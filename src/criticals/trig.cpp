@@ -503,44 +503,78 @@ void first_harmonic_roots(const Trig& f, double touch, double merge_angle, TrigR
   if (!(hi - lo <= merge_angle || lo + kTwoPi - hi <= merge_angle)) r.roots.push_back(hi);
 }
 
-}  // namespace
+// The stretches of t = tan(phi / 2), |t| <= 1, that a chart searches: phi = theta for the
+// first chart and theta - pi for the second.
+struct ChartStretches {
+  std::array<std::array<double, 2>, 2> t{};
+  int count = 0;
+};
+constexpr ChartStretches kWholeChart{{{{-1.0, 1.0}}}, 1};
 
-TrigRoots trig_roots(const Trig& raw, double zero_norm, double touch, double merge_angle) {
-  TrigRoots r;
+// The part of each window in the chart whose middle is at `centre` (0 or pi), as stretches
+// of t, overlapping ones joined.
+ChartStretches chart_stretches(double centre, const AngleWindow* windows, int count) {
+  ChartStretches c;
+  for (int w = 0; w < count; ++w) {
+    if (windows[w].half >= 0.5 * kPi) return kWholeChart;
+    // Within half a turn of the chart's middle; a window narrower than a quarter turn meets
+    // the chart's half turn only there.
+    const double mid = wrap_angle(windows[w].mid - centre);
+    const double lo = mid - windows[w].half, hi = mid + windows[w].half;
+    if (lo > 0.5 * kPi || hi < -0.5 * kPi) continue;
+    // A window reaching the chart's border searches up to t = +-1 exactly (tan(pi / 4) rounds
+    // below 1): a root on the border may be found on this chart only.
+    c.t[c.count++] = {lo <= -0.5 * kPi ? -1.0 : std::tan(0.5 * lo),
+                      hi >= 0.5 * kPi ? 1.0 : std::tan(0.5 * hi)};
+  }
+  if (c.count == 2 && c.t[1][0] < c.t[0][0]) std::swap(c.t[0], c.t[1]);
+  if (c.count == 2 && c.t[1][0] <= c.t[0][1]) {
+    c.t[0][1] = std::max(c.t[0][1], c.t[1][1]);
+    c.count = 1;
+  }
+  return c;
+}
+
+// The harmonics left after dropping cancellation residue; false when no root can exist.
+bool solvable(const Trig& raw, double zero_norm, double touch, Trig& f, TrigRoots& r) {
   const double n = raw.norm();
   if (n <= zero_norm) {
     r.identically_zero = true;
-    return r;
+    return false;
   }
   // Harmonics that cancelled down to round-off (cos^2 + sin^2 in |P + R Q|^2) would raise
   // the degree for nothing.
   // Above raw.top every harmonic is zero already.
-  Trig f = raw;
+  f = raw;
   const double cancelled = std::max(kCancelledHarmonic * n, kNegligibleOfZero * zero_norm);
   for (int j = 1; j <= f.top; ++j)
     if (harmonic_size(f, j) <= cancelled) f.a[j] = f.b[j] = 0.0;
   // No root when the constant term outweighs every harmonic together.
   double amplitude = 0.0;
   for (int j = 1; j <= f.top; ++j) amplitude += harmonic_size(f, j);
-  if (std::fabs(f.a[0]) > amplitude * (1.0 + touch) + touch * n) return r;
+  return !(std::fabs(f.a[0]) > amplitude * (1.0 + touch) + touch * n);
+}
 
-  if (f.degree() == 1) {
-    first_harmonic_roots(f, touch, merge_angle, r);
-    return r;  // every return names r, which is then built in place
-  }
-  // Two charts, each |t| <= 1: theta in [-pi/2, pi/2] directly, the rest half a turn away.
+// Roots above degree 1: on two charts, each |t| <= 1, theta in [-pi/2, pi/2] directly and
+// the rest half a turn away, each searched over its stretches.
+void chart_roots(const Trig& f, double touch, double merge_angle,
+                 const ChartStretches (&stretches)[2], TrigRoots& r) {
+  const double n = f.norm();
   for (int chart = 0; chart < 2; ++chart) {
+    if (stretches[chart].count == 0) continue;
     const Trig g = chart == 0 ? f : f.half_turned();
     const Poly p = to_half_angle(g);
-    RootList simple, twofold;
-    real_roots(p, -1.0, 1.0, touch, simple, &twofold);
     const double shift = chart == 0 ? 0.0 : kPi;
-    for (int i = 0; i < simple.count; ++i)
-      r.roots.push_back(wrap_angle(polish_root(f, 2.0 * std::atan(simple.t[i]) + shift)));
-    for (int i = 0; i < twofold.count; ++i) {
-      const double t = twofold.t[i];
-      const double theta = wrap_angle(polish_extremum(f, 2.0 * std::atan(t) + shift));
-      if (std::fabs(f(theta)) <= touch * n) r.roots.push_back(theta);
+    for (int k = 0; k < stretches[chart].count; ++k) {
+      RootList simple, twofold;
+      real_roots(p, stretches[chart].t[k][0], stretches[chart].t[k][1], touch, simple, &twofold);
+      for (int i = 0; i < simple.count; ++i)
+        r.roots.push_back(wrap_angle(polish_root(f, 2.0 * std::atan(simple.t[i]) + shift)));
+      for (int i = 0; i < twofold.count; ++i) {
+        const double t = twofold.t[i];
+        const double theta = wrap_angle(polish_extremum(f, 2.0 * std::atan(t) + shift));
+        if (std::fabs(f(theta)) <= touch * n) r.roots.push_back(theta);
+      }
     }
   }
   std::sort(r.roots.begin(), r.roots.end());
@@ -548,6 +582,27 @@ TrigRoots trig_roots(const Trig& raw, double zero_norm, double touch, double mer
   const double* last = std::unique(r.roots.begin(), r.roots.end(),
                                    [&](double x, double y) { return y - x <= merge_angle; });
   r.roots.resize(size_t(last - r.roots.begin()));
+}
+
+}  // namespace
+
+TrigRoots trig_roots(const Trig& raw, double zero_norm, double touch, double merge_angle) {
+  return trig_roots_within(raw, zero_norm, touch, merge_angle, nullptr, 0);
+}
+
+TrigRoots trig_roots_within(const Trig& raw, double zero_norm, double touch, double merge_angle,
+                            const AngleWindow* windows, int window_count) {
+  TrigRoots r;
+  Trig f;
+  if (!solvable(raw, zero_norm, touch, f, r)) return r;
+  if (f.degree() == 1) {
+    first_harmonic_roots(f, touch, merge_angle, r);
+    return r;  // every return names r, which is then built in place
+  }
+  const ChartStretches stretches[2] = {
+      windows ? chart_stretches(0.0, windows, window_count) : kWholeChart,
+      windows ? chart_stretches(kPi, windows, window_count) : kWholeChart};
+  chart_roots(f, touch, merge_angle, stretches, r);
   return r;
 }
 

@@ -104,4 +104,15 @@ struct TrigRoots {
 // Roots closer than merge_angle are reported once.
 TrigRoots trig_roots(const Trig& f, double zero_norm, double touch, double merge_angle);
 
+// An arc of orientations, from mid - half to mid + half (radians).
+struct AngleWindow {
+  double mid = 0.0, half = kPi;
+};
+// trig_roots where only the roots within some of `windows` are needed: above degree 1 the
+// roots are sought there only (the polynomial in tan(theta / 2) is searched over those
+// stretches of its charts), and those outside may or may not be reported. Degrees 0 and 1
+// are solved in closed form over the whole turn.
+TrigRoots trig_roots_within(const Trig& f, double zero_norm, double touch, double merge_angle,
+                            const AngleWindow* windows, int window_count);
+
 }  // namespace cslice

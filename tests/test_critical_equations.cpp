@@ -1,0 +1,143 @@
+// The criticality equations against the geometry they describe: the closed forms of the pair
+// equations (an end on a curve, two curves tangent) evaluated at many orientations against the
+// contact curves rebuilt there, and roots sought only within windows of orientations against
+// the roots over the whole turn.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "criticals/events.hpp"
+#include "criticals/families.hpp"
+#include "criticals/trig.hpp"
+#include "support/random_parts.hpp"
+
+using namespace cslice;
+
+namespace {
+
+// A family's curve at theta, rebuilt from its moving points (not from its equation).
+struct CurveAt {
+  bool circle = false;
+  Vec2 point, normal;  // lines
+  Vec2 centre;         // circles
+  double radius = 0.0;
+};
+CurveAt curve_at(const ContactFamily& f, double theta) {
+  CurveAt c;
+  if (f.shape == FamilyShape::circle) {
+    c.circle = true;
+    c.centre = f.center.at(theta);
+    c.radius = f.radius;
+    return c;
+  }
+  c.point = f.ends[0].at(theta);
+  c.normal = normalized(perp_left(f.ends[1].at(theta) - c.point));
+  return c;
+}
+
+// |x - C|^2 - r^2 on a circle, n . (x - p) on a line.
+double on_curve(const CurveAt& c, Vec2 x) {
+  return c.circle ? length_squared(x - c.centre) - c.radius * c.radius : dot(c.normal, x - c.point);
+}
+
+std::vector<Pair> random_pairs(int count) {
+  std::vector<Pair> out;
+  for (int seed = 0; seed < count; ++seed) {
+    std::mt19937 rng(500 + seed);
+    out.push_back(testkit::random_pair(rng, 3 + seed % 5, 4 + seed % 7, seed % 2 == 0).pair);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(CriticalEquations, PairEquationsMatchTheContactCurvesAtEveryOrientation) {
+  int checked = 0;
+  for (const Pair& pair : random_pairs(12)) {
+    const std::vector<ContactFamily> families = contact_families(pair);
+    std::vector<FamilyEquation> equations;
+    for (const ContactFamily& f : families) equations.push_back(family_equation(f));
+    for (size_t a = 0; a < families.size(); ++a)
+      for (size_t b = 0; b < families.size(); ++b) {
+        std::array<EventEquation, 2> tangents;
+        const int n = tangent_equations(equations[a], equations[b], tangents);
+        for (double theta = -3.1; theta < 3.1; theta += 0.37) {
+          const CurveAt ca = curve_at(families[a], theta), cb = curve_at(families[b], theta);
+          for (const MovingPoint& end : families[a].ends) {
+            const EventEquation e = endpoint_equation(end, equations[b]);
+            EXPECT_NEAR(e.f(theta), on_curve(cb, end.at(theta)), 1e-12 * e.magnitude);
+            ++checked;
+          }
+          if (n == 0) continue;
+          // Tangency: the signed distance of a centre from a line is +-r, or two centres are
+          // r1 + r2 or |r1 - r2| apart.
+          double expected[2];
+          if (ca.circle && cb.circle) {
+            const double d2 = length_squared(ca.centre - cb.centre);
+            expected[0] = d2 - (ca.radius + cb.radius) * (ca.radius + cb.radius);
+            expected[1] = d2 - (ca.radius - cb.radius) * (ca.radius - cb.radius);
+          } else {
+            const CurveAt& line = ca.circle ? cb : ca;
+            const CurveAt& circle = ca.circle ? ca : cb;
+            const double reach = on_curve(line, circle.centre);
+            expected[0] = reach - circle.radius;
+            expected[1] = reach + circle.radius;
+          }
+          ASSERT_EQ(n, 2);
+          for (int k = 0; k < 2; ++k)
+            EXPECT_NEAR(tangents[size_t(k)].f(theta), expected[k],
+                        1e-12 * tangents[size_t(k)].magnitude);
+        }
+      }
+  }
+  EXPECT_GT(checked, 10000);
+}
+
+TEST(CriticalEquations, RootsWithinWindowsAreTheRootsThere) {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), angle(-kPi, kPi), width(0.01, 0.8);
+  int compared = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    Trig f;
+    f.top = 2 + trial % 2;
+    for (int j = 0; j <= f.top; ++j) {
+      f.a[size_t(j)] = u(rng);
+      if (j > 0) f.b[size_t(j)] = u(rng);
+    }
+    const std::array<AngleWindow, 2> windows{{{angle(rng), width(rng)}, {angle(rng), width(rng)}}};
+    const int count = 1 + trial % 2;
+    const TrigRoots all = trig_roots(f, 0.0, 1e-9, 1e-9);
+    const TrigRoots within = trig_roots_within(f, 0.0, 1e-9, 1e-9, windows.data(), count);
+    // Every root inside a window (clear of its edges, where the two may differ by round-off)
+    // is found, at the same orientation.
+    for (double root : all.roots) {
+      bool inside = false;
+      for (int w = 0; w < count; ++w)
+        inside |=
+            std::fabs(wrap_angle(root - windows[size_t(w)].mid)) < windows[size_t(w)].half - 1e-6;
+      if (!inside) continue;
+      double best = kPi;
+      for (double r : within.roots) best = std::min(best, std::fabs(wrap_angle(r - root)));
+      EXPECT_LE(best, 1e-9) << "trial " << trial << " root " << root;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 500);
+}
+
+TEST(CriticalEquations, AWindowReachingAChartBorderFindsTheRootOnIt) {
+  // cos(theta) (1 + sin(theta) / 2) = cos + sin(2 theta) / 4 vanishes at -pi/2 and pi/2,
+  // the borders between the two charts; tan(pi / 4) rounds below 1.
+  Trig f;
+  f.top = 2;
+  f.a[1] = 1.0;
+  f.b[2] = 0.25;
+  for (double border : {-0.5 * kPi, 0.5 * kPi})
+    for (double offset : {-0.03, 0.0, 0.03}) {
+      const AngleWindow window{border + offset, 0.05};
+      const TrigRoots r = trig_roots_within(f, 0.0, 1e-9, 1e-9, &window, 1);
+      double best = kPi;
+      for (double root : r.roots) best = std::min(best, std::fabs(wrap_angle(root - border)));
+      EXPECT_LE(best, 1e-12) << "border " << border << " offset " << offset;
+    }
+}
