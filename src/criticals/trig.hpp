@@ -75,8 +75,13 @@ Vec2 evaluate(const TrigVec& v, const TrigAngle& theta);
 // contact) that a sign test would miss. Returns no roots when f is identically zero
 // relative to `zero_norm` (f.norm() <= zero_norm): the condition then holds for every theta
 // and marks a permanent coincidence, not a critical orientation.
-// At most this many roots: two charts, each with its simple and its double roots.
+// At most this many roots: two charts, each with its simple and its double roots. On a chart
+// the polynomial in t has degree 2n <= 2 kMaxDegree: at most 2n distinct simple roots and
+// 2n - 1 turning points (double roots), plus one repeat where the two stretches a chart may
+// be searched over touch: two charts give at most 8n <= kMaxTrigRoots, and push_back's guard
+// never drops a root.
 inline constexpr int kMaxTrigRoots = 4 * (2 * Trig::kMaxDegree + 1);
+static_assert(2 * (2 * (2 * Trig::kMaxDegree) - 1 + 1) <= kMaxTrigRoots);
 // Fixed capacity, no allocation: thousands of equations are solved per pair of parts.
 class TrigRootList {
  public:
