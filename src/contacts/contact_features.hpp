@@ -3,6 +3,7 @@
 // which it can touch another part.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -36,6 +37,7 @@ bool pair_can_touch(const ContactFeature& m, const ContactFeature& f, double eps
 ContactKind contact_kind(const ContactFeature& m, const ContactFeature& f);
 
 class NormalIndex;  // contacts.cpp
+class TrigMemo;     // slice/trig_memo.hpp
 
 // The contact segments of one pair at many orientations: the features as contact makers
 // and the index of fixed normals are built once. Not thread-safe (it keeps scratch state):
@@ -48,12 +50,19 @@ class ContactMaker {
   ContactMaker& operator=(const ContactMaker&) = delete;
   // Replaces out with the contact segments at theta, as contact_segments(pair, theta).
   void segments(double theta, std::vector<ContactSegment>& out);
+  // The sines, cosines and tangents of the contact arcs' end angles made so far: the
+  // arrangement evaluates the arcs there again.
+  TrigMemo& trig() { return *trig_; }
 
  private:
   const Pair& pair_;
   std::vector<ContactFeature> moving_, fixed_;
   std::unique_ptr<NormalIndex> index_;
+  std::unique_ptr<TrigMemo> trig_;
   std::vector<int> candidates_;  // reused scratch
+  // Per moving feature, the fixed ones it can touch (pair_can_touch) as bits, when there are
+  // few enough fixed features for NormalIndex to list candidates from bits; else empty.
+  std::vector<uint64_t> touching_;
 };
 
 // Appends the contact segments of one feature pair at theta (none when the pair cannot

@@ -18,6 +18,7 @@
 
 #include "contacts/contact_features.hpp"
 #include "cslice/slice.hpp"
+#include "slice/trig_memo.hpp"
 
 namespace cslice {
 
@@ -98,16 +99,21 @@ class ContactBuilder {
  public:
   // `fixed_normals`, when given, holds unit_vector(f.normals.lo) of every fixed feature f
   // (indexed by f.feature): the normal of a fixed segment, the same at every orientation.
+  // `trig`, when given, remembers the arcs' end directions and bulges between slices.
   ContactBuilder(const Pair& pair, double theta, std::vector<ContactSegment>& out,
-                 const std::vector<Vec2>* fixed_normals = nullptr)
+                 const std::vector<Vec2>* fixed_normals = nullptr, TrigMemo* trig = nullptr)
       : pair_(pair),
         rot_(Pose{0.0, 0.0, theta}),
         theta_(theta),
         out_(out),
-        fixed_normals_(fixed_normals) {}
+        fixed_normals_(fixed_normals),
+        trig_(trig) {}
 
   void add_pair(const ContactFeature& m, const ContactFeature& f) {
-    if (!pair_can_touch(m, f, pair_.tol.geometric)) return;
+    if (pair_can_touch(m, f, pair_.tol.geometric)) add_touching_pair(m, f);
+  }
+  // A pair known to pass pair_can_touch.
+  void add_touching_pair(const ContactFeature& m, const ContactFeature& f) {
     if (f.kind == FeatureKind::segment) return add_disc_on_segment(m, f);
     if (m.kind == FeatureKind::segment) return add_segment_on_disc(m, f);
     add_disc_on_disc(m, f);
@@ -127,6 +133,22 @@ class ContactBuilder {
     s.curve = curve;
     s.is_point = is_point;
     out_.push_back(s);
+  }
+
+  // make_arc, its sines, cosines and tangent taken from the memo when there is one.
+  Curve arc(Vec2 center, double radius, double start_angle, double sweep) const {
+    if (!trig_) return make_arc(center, radius, start_angle, sweep);
+    Curve c;
+    c.center = center;
+    c.radius = radius;
+    c.start_angle = start_angle;
+    c.sweep = std::clamp(sweep, -kTwoPi, kTwoPi);
+    c.from = center + radius * trig_->unit_vector(start_angle);
+    c.to =
+        c.is_full_circle() ? c.from : center + radius * trig_->unit_vector(start_angle + c.sweep);
+    c.bulge =
+        c.is_full_circle() ? std::numeric_limits<double>::infinity() : trig_->tan(c.sweep / 4.0);
+    return c;
   }
 
   // A moving disc feature on a fixed segment: the segment shifted by rho_m n_f - R c_m.
@@ -172,11 +194,11 @@ class ContactBuilder {
       // radii apart) longer than eps, and dropping it would leave a gap in contact space.
       if (std::fabs(rho) * parts[i].span <= eps) continue;
       if (rho > 0.0) {
-        emit(m, f, contact_kind(m, f), make_arc(c, rho, parts[i].lo, parts[i].span));
+        emit(m, f, contact_kind(m, f), arc(c, rho, parts[i].lo, parts[i].span));
       } else {
         // c + rho n = c + |rho| n(phi + pi); traverse clockwise to keep blocked on the left.
         emit(m, f, contact_kind(m, f),
-             make_arc(c, -rho, parts[i].lo + parts[i].span + kPi, -parts[i].span));
+             arc(c, -rho, parts[i].lo + parts[i].span + kPi, -parts[i].span));
       }
     }
   }
@@ -202,6 +224,7 @@ class ContactBuilder {
   double theta_;
   std::vector<ContactSegment>& out_;
   const std::vector<Vec2>* fixed_normals_;
+  TrigMemo* trig_;
   const ContactFeature* moving_of_ = nullptr;
   Moving moving_;
 };
@@ -235,7 +258,9 @@ class NormalIndex {
 
   // Every fixed feature whose bucket range meets the interval, once each, in feature order:
   // the output (segment ids) then follows the features' order, whatever the bucketing.
-  void candidates(const AngleInterval& normals, std::vector<int>& out) const {
+  // With few features (few_features()), only those whose bit is set in `allowed`.
+  void candidates(const AngleInterval& normals, std::vector<int>& out,
+                  uint64_t allowed = ~uint64_t{0}) const {
     out.clear();
     const Range r = range_of(normals);
     if (ranges_.size() <= kScanLimit) {
@@ -245,7 +270,7 @@ class NormalIndex {
       for_each_bucket_range(r, [&](size_t from, size_t to) {
         for (size_t b = from; b < to; ++b) bits |= masks_[b];
       });
-      for (; bits != 0; bits &= bits - 1) out.push_back(std::countr_zero(bits));
+      for (bits &= allowed; bits != 0; bits &= bits - 1) out.push_back(std::countr_zero(bits));
       return;
     }
     // A feature lies in every bucket its range meets: marked once each in a bitmap of the
@@ -269,6 +294,9 @@ class NormalIndex {
       seen[w] = 0;
     }
   }
+
+  // Whether candidates reads the features from bits (and can filter them by a mask).
+  bool few_features() const { return ranges_.size() <= kScanLimit; }
 
   // unit_vector(f.normals.lo) of every fixed feature f, in feature order.
   const std::vector<Vec2>& normals() const { return normals_; }
@@ -318,17 +346,34 @@ ContactMaker::ContactMaker(const Pair& pair)
     : pair_(pair),
       moving_(contact_features(pair.moving)),
       fixed_(contact_features(pair.fixed)),
-      index_(std::make_unique<NormalIndex>(fixed_, pair.tol.angular)) {}
+      index_(std::make_unique<NormalIndex>(fixed_, pair.tol.angular)),
+      trig_(std::make_unique<TrigMemo>()) {
+  // Which pairs can touch at all does not depend on theta: with few fixed features, as a
+  // mask per moving feature that filters the candidates before they are looked at.
+  if (!index_->few_features()) return;
+  touching_.assign(moving_.size(), 0);
+  for (size_t i = 0; i < moving_.size(); ++i)
+    for (size_t j = 0; j < fixed_.size(); ++j)
+      if (pair_can_touch(moving_[i], fixed_[j], pair.tol.geometric))
+        touching_[i] |= uint64_t{1} << j;
+}
 
 ContactMaker::~ContactMaker() = default;
 
 void ContactMaker::segments(double theta, std::vector<ContactSegment>& out) {
   out.clear();
-  ContactBuilder builder(pair_, theta, out, &index_->normals());
-  for (const ContactFeature& m : moving_) {
+  ContactBuilder builder(pair_, theta, out, &index_->normals(), trig_.get());
+  for (size_t k = 0; k < moving_.size(); ++k) {
+    const ContactFeature& m = moving_[k];
     if (!m.can_touch) continue;
-    index_->candidates({m.normals.lo + theta + kPi, m.normals.span}, candidates_);
-    for (int i : candidates_) builder.add_pair(m, fixed_[i]);
+    const AngleInterval normals{m.normals.lo + theta + kPi, m.normals.span};
+    if (touching_.empty()) {
+      index_->candidates(normals, candidates_);
+      for (int i : candidates_) builder.add_pair(m, fixed_[i]);
+    } else {
+      index_->candidates(normals, candidates_, touching_[k]);
+      for (int i : candidates_) builder.add_touching_pair(m, fixed_[i]);
+    }
   }
 }
 

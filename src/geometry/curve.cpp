@@ -129,15 +129,34 @@ const std::array<AxisDirection, 4>& axis_directions() {
   return axes;
 }
 
+// Whether arc_parameter_of_angle(c, a) lies in [0, 1], from its angle delta before the
+// division: delta / span is in [0, 1] exactly when delta <= span (a quotient of positive
+// doubles rounds above 1 whenever the numerator is the larger), and delta = 2pi becomes
+// 0 / span when moved back a turn. Any other delta beyond span ends outside [0, 1].
+bool arc_passes(const Curve& c, double span, double a) {
+  double delta = c.sweep > 0.0 ? a - c.start_angle : c.start_angle - a;
+  delta = fmod_two_pi(delta);
+  if (delta < 0.0) delta += kTwoPi;
+  return delta <= span || delta == kTwoPi;
+}
+
 }  // namespace
 
 Box arc_bounding_box(const Curve& c) {
   Box b;
   b.add(c.from);
   b.add(c.to);
+  const double span = std::fabs(c.sweep);
+  const bool plain = span > 0.0 && span <= kTwoPi;  // else the division's own rules decide
   for (const AxisDirection& axis : axis_directions()) {
-    const double t = arc_parameter_of_angle(c, axis.angle);
-    if (t >= 0.0 && t <= 1.0) b.add(c.center + c.radius * axis.unit);
+    bool passes;
+    if (plain) {
+      passes = arc_passes(c, span, axis.angle);
+    } else {
+      const double t = arc_parameter_of_angle(c, axis.angle);
+      passes = t >= 0.0 && t <= 1.0;
+    }
+    if (passes) b.add(c.center + c.radius * axis.unit);
   }
   return b;
 }

@@ -10,23 +10,61 @@
 #include "slice/arrangement.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <numeric>
 
 #include "parts/loop_queries.hpp"
 #include "slice/close_points.hpp"
+#include "slice/small_sort.hpp"
 #include "slice/split_points.hpp"
+#include "slice/trig_memo.hpp"
 
 namespace cslice {
 namespace {
 
-// (vertex, curve, curve) with the curves' indices ascending: pairs of curves that the
-// intersection step found crossing at that vertex; (-1, curve, curve): pairs it found
-// tangent (touching without crossing), wherever they meet.
-using MeetingKey = std::array<int, 3>;
-struct Meetings {
-  std::vector<MeetingKey> tangents, crossings;  // sorted
+// Pairs of curves that the intersection step found crossing at a vertex, and pairs it found
+// tangent (touching without crossing) wherever they meet. Only asked about where three or
+// more half-edges leave a vertex side by side: sorted on the first question.
+class Meetings {
+ public:
+  void clear() {
+    tangents_.clear();
+    crossings_.clear();
+    sorted_ = false;
+  }
+  // a < b throughout.
+  void add_tangent(int a, int b) { tangents_.push_back(pack(a, b)); }
+  void add_crossing(int vertex, int a, int b) { crossings_.push_back({pack(vertex, a), b}); }
+  bool tangent(int a, int b) {
+    sort();
+    return std::binary_search(tangents_.begin(), tangents_.end(), pack(a, b));
+  }
+  bool crossing(int vertex, int a, int b) {
+    sort();
+    return std::binary_search(crossings_.begin(), crossings_.end(), Crossing{pack(vertex, a), b},
+                              less);
+  }
+
+ private:
+  struct Crossing {
+    uint64_t vertex_a;
+    int b;
+  };
+  static uint64_t pack(int hi, int lo) { return uint64_t(uint32_t(hi)) << 32 | uint32_t(lo); }
+  static bool less(const Crossing& x, const Crossing& y) {
+    return x.vertex_a != y.vertex_a ? x.vertex_a < y.vertex_a : x.b < y.b;
+  }
+  void sort() {
+    if (sorted_) return;
+    small_sort(tangents_.begin(), tangents_.end());
+    small_sort(crossings_.begin(), crossings_.end(), less);
+    sorted_ = true;
+  }
+  std::vector<uint64_t> tangents_;
+  std::vector<Crossing> crossings_;
+  bool sorted_ = false;
 };
 
 }  // namespace
@@ -61,9 +99,19 @@ struct ArrangementBuilder::Scratch {
     Vec2 start;    // where the piece really leaves from, before snapping to the vertex
   };
   std::vector<Direction> dirs;
+  // Per curve and way along it, the last direction of a segment's piece and its angle: every
+  // piece of a segment leaves its vertices in one of two directions.
+  struct AngleMemo {
+    uint64_t x, y;  // bits of the direction
+    double angle;   // atan2 of it
+  };
+  std::vector<AngleMemo> segment_angles;
   std::vector<int> position, comp;
   std::vector<double> area;
-  std::vector<Box> box;  // per edge, from trace_cycles on
+  // Per edge its box (the same both ways), per cycle the union of its edges' boxes: found
+  // when first asked after a build (known).
+  std::vector<Box> box, cycle_box;
+  std::vector<char> box_known, cycle_box_known;
   std::vector<int> outer_of_component, bounded, candidates;
   struct Probe {
     Vec2 p;
@@ -196,21 +244,25 @@ void merge_points(Scratch& s, double eps, std::vector<Vec2>& vertices) {
     }
   }
   if (work > budget) unite_close_by_cells(points, order, eps, uf, s.by_cell);
-  s.vertex_of.resize(splits.size());
-  s.vertex_of_root.assign(splits.size(), -1);
-  for (size_t i = 0; i < splits.size(); ++i) {
+  const size_t count = splits.size();  // read once: the stores below could alias it
+  s.vertex_of.resize(count);
+  s.vertex_of_root.assign(count, -1);
+  int* vertex_of = s.vertex_of.data();
+  int* vertex_of_root = s.vertex_of_root.data();
+  for (size_t i = 0; i < count; ++i) {
     const int root = s.uf.find(int(i));
-    if (s.vertex_of_root[root] < 0) {
-      s.vertex_of_root[root] = int(vertices.size());
+    if (vertex_of_root[root] < 0) {
+      vertex_of_root[root] = int(vertices.size());
       vertices.push_back(splits[root].p);
     }
-    s.vertex_of[i] = s.vertex_of_root[root];
+    vertex_of[i] = vertex_of_root[root];
   }
 }
 
 // The piece of c between parameters t0 and t1, snapped to the given ends (make_arc without
-// the trigonometry for ends that are replaced anyway).
-Curve piece_of(const Curve& c, double t0, double t1, Vec2 from, Vec2 to) {
+// the trigonometry for ends that are replaced anyway). A whole arc's bulge is the one its
+// maker computed, when `trig` remembers it.
+Curve piece_of(const Curve& c, double t0, double t1, Vec2 from, Vec2 to, TrigMemo* trig) {
   if (c.is_segment()) return make_segment(from, to);
   Curve piece;
   piece.center = c.center;
@@ -219,8 +271,11 @@ Curve piece_of(const Curve& c, double t0, double t1, Vec2 from, Vec2 to) {
   piece.sweep = std::clamp((t1 - t0) * c.sweep, -kTwoPi, kTwoPi);
   piece.from = from;
   piece.to = to;
-  piece.bulge = piece.is_full_circle() ? std::numeric_limits<double>::infinity()
-                                       : std::tan(piece.sweep / 4.0);
+  if (piece.is_full_circle())
+    piece.bulge = std::numeric_limits<double>::infinity();
+  else
+    piece.bulge =
+        trig && t0 == 0.0 && t1 == 1.0 ? trig->tan(piece.sweep / 4.0) : std::tan(piece.sweep / 4.0);
   return piece;
 }
 
@@ -242,9 +297,10 @@ void group_by(size_t n, size_t keys, Key key, std::vector<int>& start, std::vect
 // their lower end, then sorted by the other one within each (small) group.
 void merge_coincident_edges(Arrangement& arr, Scratch& s, double eps) {
   std::vector<ArrangementEdge>& pieces = s.pieces;
+  const size_t count = pieces.size();  // read once: the stores below could alias it
   std::vector<std::pair<int, int>>& end_pairs = s.end_pairs;  // compact: read many times
-  end_pairs.resize(pieces.size());
-  for (size_t i = 0; i < pieces.size(); ++i)
+  end_pairs.resize(count);
+  for (size_t i = 0; i < count; ++i)
     end_pairs[i] = {std::min(pieces[i].u, pieces[i].v), std::max(pieces[i].u, pieces[i].v)};
   auto ends = [&](int i) { return end_pairs[i]; };
   std::vector<int>& start = s.start;
@@ -254,17 +310,20 @@ void merge_coincident_edges(Arrangement& arr, Scratch& s, double eps) {
       order, s.fill);
   for (size_t g = 0; g + 1 < start.size(); ++g)
     if (start[g + 1] - start[g] > 1)
-      std::sort(order.begin() + start[g], order.begin() + start[g + 1],
-                [&](int a, int b) { return ends(a) != ends(b) ? ends(a) < ends(b) : a < b; });
+      small_sort(order.begin() + start[g], order.begin() + start[g + 1], [&](int a, int b) {
+        const auto [a0, a1] = ends(a);
+        const auto [b0, b1] = ends(b);
+        return a0 != b0 ? a0 < b0 : a1 != b1 ? a1 < b1 : a < b;
+      });
   arr.edges.reserve(pieces.size());
   std::vector<int>& kept = s.kept;  // piece -> arrangement edge
   kept.assign(pieces.size(), -1);
   std::vector<Vec2>& kept_mid = s.kept_mid;  // midpoint of each edge kept so far, when needed
   kept_mid.clear();
-  for (size_t i = 0; i < order.size(); ++i) {
+  for (size_t i = 0; i < count; ++i) {
     ArrangementEdge& e = pieces[order[i]];
     const bool after_same = i > 0 && ends(order[i - 1]) == ends(order[i]);
-    const bool before_same = i + 1 < order.size() && ends(order[i + 1]) == ends(order[i]);
+    const bool before_same = i + 1 < count && ends(order[i + 1]) == ends(order[i]);
     if (!after_same && !before_same) {  // the only piece between its ends
       kept[order[i]] = int(arr.edges.size());
       arr.edges.push_back(std::move(e));
@@ -295,7 +354,7 @@ void merge_coincident_edges(Arrangement& arr, Scratch& s, double eps) {
 }
 
 void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
-                 const std::vector<int>& ids, double eps) {
+                 const std::vector<int>& ids, double eps, TrigMemo* trig) {
   const std::vector<SplitPoint>& splits = s.splits;
   const std::vector<int>& vertex_of = s.vertex_of;
   // Split points along each curve in order of (t, index): grouped by curve, then each
@@ -310,11 +369,17 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
   const std::vector<int>& along = grouped ? grouped->index : s.along;
   std::vector<std::pair<double, int>>& at_t = s.at_t;
   at_t.resize(splits.size());
-  for (size_t k = 0; k < along.size(); ++k) at_t[k] = {splits[along[k]].t, along[k]};
+  const size_t count = along.size();  // read once: the stores below could alias it
+  for (size_t k = 0; k < count; ++k) at_t[k] = {splits[along[k]].t, along[k]};
+  // pair's operator<, spelled out.
+  auto by_t = [](const std::pair<double, int>& a, const std::pair<double, int>& b) {
+    return a.first < b.first || (a.first == b.first && a.second < b.second);
+  };
   for (size_t c = 0; c < curves.size(); ++c)
-    std::sort(at_t.begin() + start[c], at_t.begin() + start[c + 1]);
+    small_sort(at_t.begin() + start[c], at_t.begin() + start[c + 1], by_t);
   // Where each split point really is on its curve, and the curve's tangent there: one sine
-  // and cosine per point of an arc (point_at and tangent_at, sharing the radial direction).
+  // and cosine per point of an arc (point_at and tangent_at, sharing the radial direction),
+  // at an arc's ends the ones its maker took, when `trig` remembers them.
   struct OnCurve {
     Vec2 point, tangent;
   };
@@ -322,7 +387,9 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
   Vec2 direction;
   auto on_curve = [&](const Curve& c, double t) {
     if (c.is_segment()) return OnCurve{point_at(c, t), direction};
-    const Vec2 radial = unit_vector(c.start_angle + t * c.sweep);
+    const double angle = c.start_angle + t * c.sweep;
+    const Vec2 radial =
+        trig && (t == 0.0 || t == 1.0) ? trig->unit_vector(angle) : unit_vector(angle);
     const Vec2 p = t == 0.0 ? c.from : t == 1.0 ? c.to : c.center + c.radius * radial;
     return OnCurve{p, c.sweep > 0.0 ? perp_left(radial) : perp_right(radial)};
   };
@@ -334,7 +401,8 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
     if (curve.is_segment()) direction = normalized(curve.to - curve.from);
     int cached = -1;  // the split point `at` describes
     OnCurve at{};
-    for (int k = start[c]; k + 1 < start[c + 1]; ++k) {
+    const int last = start[c + 1] - 1;
+    for (int k = start[c]; k < last; ++k) {
       const auto [ta, a] = at_t[k];
       const auto [tb, b] = at_t[k + 1];
       // Consecutive points at one vertex make no edge, except a full circle's only piece.
@@ -342,16 +410,12 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
       const OnCurve from = cached == a ? at : on_curve(curve, ta);
       at = on_curve(curve, tb);
       cached = b;
-      ArrangementEdge& e = pieces.emplace_back();
-      e.u = vertex_of[a];
-      e.v = vertex_of[b];
-      e.curve = piece_of(curve, ta, tb, arr.vertices[e.u], arr.vertices[e.v]);
-      e.source = int(c);
-      e.tangent_u = from.tangent;
-      e.tangent_v = at.tangent;
-      e.point_u = from.point;
-      e.point_v = at.point;
-      e.labels.push_back({ids[c], true});
+      const int u = vertex_of[a], v = vertex_of[b];
+      // Built in place, field by field (a default edge first, then assigned, wrote each
+      // field twice).
+      pieces.emplace_back(u, v, piece_of(curve, ta, tb, arr.vertices[u], arr.vertices[v], trig),
+                          EdgeLabels(EdgeLabel{ids[c], true}), int(c), from.tangent, at.tangent,
+                          from.point, at.point);
     }
   }
   merge_coincident_edges(arr, s, eps);
@@ -374,20 +438,34 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
 //   direction may point across the other while it stays on its own side up to the vertex.
 //   They are compared where they are at the snapping radius: eps along each piece from its
 //   own unsnapped start, which for pieces leaving one point is the order of directions.
-bool lies_clockwise(const Direction& a, const Direction& b, const Meetings& meetings, double eps,
+bool lies_clockwise(const Direction& a, const Direction& b, Meetings& meetings, double eps,
                     double angular_eps) {
   const double gap = b.angle - a.angle;
   // A tangency also joins curves leaving in opposite directions (one continuing the other);
   // only curves leaving side by side are tied.
   if (gap >= 0.5 * kPi) return false;
-  const MeetingKey key{a.vertex, std::min(a.curve, b.curve), std::max(a.curve, b.curve)};
-  if (a.curvature != b.curvature &&
-      (gap <= angular_eps || std::binary_search(meetings.tangents.begin(), meetings.tangents.end(),
-                                                MeetingKey{-1, key[1], key[2]})))
+  const int lo = std::min(a.curve, b.curve), hi = std::max(a.curve, b.curve);
+  if (a.curvature != b.curvature && (gap <= angular_eps || meetings.tangent(lo, hi)))
     return a.curvature > b.curvature;
-  if (std::binary_search(meetings.crossings.begin(), meetings.crossings.end(), key)) return false;
+  if (meetings.crossing(a.vertex, lo, hi)) return false;
   const Vec2 ahead_a = a.start + eps * a.tangent, ahead_b = b.start + eps * b.tangent;
   return cross(a.tangent + b.tangent, ahead_b - ahead_a) < 0.0;
+}
+
+// std::atan2(t.y, t.x) for a piece of segment `curve` leaving forward or backward, the value
+// computed for an earlier piece when it left in the same direction (compared bit for bit:
+// the memo outlives the slice it was filled in, and atan2 tells -0 from +0).
+double segment_angle(std::vector<Scratch::AngleMemo>& memo, int curve, bool forward, Vec2 t) {
+  const size_t k = 2 * size_t(curve) + (forward ? 0 : 1);
+  if (memo.size() <= k) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    memo.resize(2 * k + 2,
+                {std::bit_cast<uint64_t>(nan), std::bit_cast<uint64_t>(nan), std::atan2(nan, nan)});
+  }
+  Scratch::AngleMemo& m = memo[k];
+  const uint64_t x = std::bit_cast<uint64_t>(t.x), y = std::bit_cast<uint64_t>(t.y);
+  if (m.x != x || m.y != y) m = {x, y, std::atan2(t.y, t.x)};
+  return m.angle;
 }
 
 // Orders the half-edges leaving each vertex counterclockwise by tangent, ties (tangent
@@ -402,7 +480,8 @@ void order_outgoing(Arrangement& arr, Scratch& s, double eps, double angular_eps
       arr.outgoing_start, arr.outgoing_edges, s.fill);
   std::vector<Direction>& dirs = s.dirs;  // by half-edge, those at vertices of degree >= 3
   dirs.resize(2 * arr.edges.size());
-  for (size_t v = 0; v < arr.vertices.size(); ++v) {
+  const size_t vertices = arr.vertices.size();  // read once: the stores below could alias it
+  for (size_t v = 0; v < vertices; ++v) {
     if (arr.outgoing_start[v + 1] - arr.outgoing_start[v] < 3) continue;
     const auto first = arr.outgoing_edges.begin() + arr.outgoing_start[v];
     const auto last = arr.outgoing_edges.begin() + arr.outgoing_start[v + 1];
@@ -416,13 +495,14 @@ void order_outgoing(Arrangement& arr, Scratch& s, double eps, double angular_eps
       x = {int(v),
            h,
            edge.source,
-           std::atan2(t.y, t.x),
+           edge.curve.is_segment() ? segment_angle(s.segment_angles, edge.source, forward, t)
+                                   : std::atan2(t.y, t.x),
            forward ? k : -k,
            t,
            forward ? edge.point_u : edge.point_v};
       if (x.angle > kPi - angular_eps) x.angle -= kTwoPi;  // one representative for +-pi
     }
-    std::sort(first, last, [&](int a, int b) {
+    small_sort(first, last, [&](int a, int b) {
       return dirs[a].angle != dirs[b].angle ? dirs[a].angle < dirs[b].angle : a < b;
     });
     // Insertion pass: nearly sorted already, only neighbours side by side move.
@@ -439,7 +519,8 @@ void link_half_edges(Arrangement& arr, Scratch& s) {
   const size_t n = 2 * arr.edges.size();
   std::vector<int>& position = s.position;
   position.resize(n);
-  for (int v = 0; v < int(arr.vertices.size()); ++v) {
+  const int vertices = int(arr.vertices.size());  // read once: the stores below could alias it
+  for (int v = 0; v < vertices; ++v) {
     const std::span<const int> out = arr.outgoing(v);
     for (size_t i = 0; i < out.size(); ++i) position[out[i]] = int(i);
   }
@@ -463,15 +544,11 @@ void trace_cycles(Arrangement& arr, Scratch& s) {
   const size_t n = 2 * arr.edges.size();
   vertex_components(arr, s);
   // Per edge, once: its area term (the twin's is the negation: the chord's cross product and
-  // the circular segment both change sign) and its box (the same both ways).
+  // the circular segment both change sign).
   std::vector<double>& area = s.area;
-  std::vector<Box>& box = s.box;
-  area.resize(arr.edges.size());
-  box.resize(arr.edges.size());
-  for (size_t e = 0; e < arr.edges.size(); ++e) {
-    area[e] = signed_area_contribution(arr.edges[e].curve);
-    box[e] = bounding_box(arr.edges[e].curve);
-  }
+  const size_t edges = arr.edges.size();  // read once: the stores below could alias it
+  area.resize(edges);
+  for (size_t e = 0; e < edges; ++e) area[e] = signed_area_contribution(arr.edges[e].curve);
   arr.cycle_of.assign(n, -1);
   arr.cycle_half_edges.reserve(n);
   for (size_t start = 0; start < n; ++start) {
@@ -484,7 +561,6 @@ void trace_cycles(Arrangement& arr, Scratch& s) {
       arr.cycle_of[h] = int(arr.cycles.size());
       arr.cycle_half_edges.push_back(h);
       cycle.area += h % 2 == 0 ? area[h / 2] : -area[h / 2];
-      cycle.box.add(box[h / 2]);
       h = arr.next[h];
     } while (h != int(start) && arr.cycle_of[h] < 0);
     cycle.count = int(arr.cycle_half_edges.size()) - cycle.first;
@@ -533,6 +609,56 @@ void list_face_cycles(Arrangement& arr, Scratch& s) {
       arr.face_cycle_list[fill[arr.cycles[c].face]++] = int(c);
 }
 
+// The box of cycle k, and those of its edges, computed on first use after a build.
+const Box& cycle_box_of(const Arrangement& arr, Scratch& s, int k) {
+  if (s.cycle_box_known[k]) return s.cycle_box[k];
+  Box& b = s.cycle_box[k];
+  b = Box{};
+  for (int h : arr.half_edges(k)) {
+    const int e = h / 2;
+    if (!s.box_known[e]) {
+      s.box[e] = bounding_box(arr.edges[e].curve);
+      s.box_known[e] = true;
+    }
+    b.add(s.box[e]);
+  }
+  s.cycle_box_known[k] = true;
+  return b;
+}
+
+// Places each outer cycle (s.probes, sorted by y) in the smallest bounded cycle of another
+// component enclosing its probe point: cycles are tried smallest first (s.bounded), each
+// against the still unplaced points in its box.
+void place_outer_cycles(Arrangement& arr, Scratch& s) {
+  const std::vector<Scratch::Probe>& probes = s.probes;
+  std::sort(s.bounded.begin(), s.bounded.end(),
+            [&](int a, int b) { return arr.cycles[a].area < arr.cycles[b].area; });
+  s.placed.assign(probes.size(), false);
+  for (int k : s.bounded) {
+    const ArrangementCycle& o = arr.cycles[k];
+    const Box& o_box = cycle_box_of(arr, s, k);
+    s.candidates.clear();
+    s.points.clear();
+    auto it = std::lower_bound(probes.begin(), probes.end(), o_box.lo.y,
+                               [](const Scratch::Probe& a, double y) { return a.p.y < y; });
+    for (; it != probes.end() && it->p.y <= o_box.hi.y; ++it) {
+      const size_t i = it - probes.begin();
+      if (s.placed[i] || it->p.x < o_box.lo.x || it->p.x > o_box.hi.x ||
+          arr.cycles[it->cycle].component == o.component)
+        continue;
+      s.candidates.push_back(int(i));
+      s.points.push_back(it->p);
+    }
+    if (s.candidates.empty()) continue;
+    cycle_encloses(arr, k, s.box, s.points, s.inside);
+    for (size_t j = 0; j < s.candidates.size(); ++j) {
+      if (!s.inside[j]) continue;
+      s.placed[s.candidates[j]] = true;
+      arr.cycles[probes[s.candidates[j]].cycle].face = o.face;
+    }
+  }
+}
+
 // Every connected component has exactly one outer cycle, the one of least signed area (a
 // tree's only cycle has area 0); each of its other cycles bounds a face of its own, however
 // small, so no area threshold decides topology. An outer cycle belongs to the smallest
@@ -554,10 +680,7 @@ void assign_faces(Arrangement& arr, Scratch& s) {
     bounded.push_back(int(c));
   }
   // Each outer cycle is represented by its first vertex; its face is the smallest bounded
-  // cycle of another component enclosing that point. Cycles are tried smallest first, each
-  // against the still unplaced points in its box.
-  std::sort(bounded.begin(), bounded.end(),
-            [&](int a, int b) { return arr.cycles[a].area < arr.cycles[b].area; });
+  // cycle of another component enclosing that point.
   std::vector<Scratch::Probe>& probes = s.probes;
   probes.clear();
   for (size_t c = 0; c < arr.cycles.size(); ++c) {
@@ -567,51 +690,33 @@ void assign_faces(Arrangement& arr, Scratch& s) {
   }
   std::sort(probes.begin(), probes.end(),
             [](const Scratch::Probe& a, const Scratch::Probe& b) { return a.p.y < b.p.y; });
-  s.placed.assign(probes.size(), false);
-  for (int k : bounded) {
-    const ArrangementCycle& o = arr.cycles[k];
-    s.candidates.clear();
-    s.points.clear();
-    auto it = std::lower_bound(probes.begin(), probes.end(), o.box.lo.y,
-                               [](const Scratch::Probe& a, double y) { return a.p.y < y; });
-    for (; it != probes.end() && it->p.y <= o.box.hi.y; ++it) {
-      const size_t i = it - probes.begin();
-      if (s.placed[i] || it->p.x < o.box.lo.x || it->p.x > o.box.hi.x ||
-          arr.cycles[it->cycle].component == o.component)
-        continue;
-      s.candidates.push_back(int(i));
-      s.points.push_back(it->p);
-    }
-    if (s.candidates.empty()) continue;
-    cycle_encloses(arr, k, s.box, s.points, s.inside);
-    for (size_t j = 0; j < s.candidates.size(); ++j) {
-      if (!s.inside[j]) continue;
-      s.placed[s.candidates[j]] = true;
-      arr.cycles[probes[s.candidates[j]].cycle].face = o.face;
-    }
-  }
+  // One component: no other to place (its outer cycle is the only probe), and no boxes.
+  if (probes.size() > 1) place_outer_cycles(arr, s);
   list_face_cycles(arr, s);
 }
 
 // The pairs of curves the intersection step found tangent anywhere, or crossing at a vertex.
 void collect_meetings(Scratch& s) {
   Meetings& m = s.meetings;
-  m.tangents.clear();
-  m.crossings.clear();
-  for (size_t i = 0; i < s.splits.size(); ++i) {
+  m.clear();
+  // A meeting makes a split point on each curve, at the same point (so at the same vertex)
+  // and the same way: the one on the lower curve tells it.
+  const size_t count = s.splits.size();  // read once: the stores below could alias it
+  for (size_t i = 0; i < count; ++i) {
     const SplitPoint& sp = s.splits[i];
-    if (sp.how == Meeting::other) continue;
-    const int a = sp.curve, b = sp.met;
+    if (sp.how == Meeting::other || sp.curve > sp.met) continue;
     if (sp.how == Meeting::tangent)
-      m.tangents.push_back({-1, std::min(a, b), std::max(a, b)});
+      m.add_tangent(sp.curve, sp.met);
     else
-      m.crossings.push_back({s.vertex_of[i], std::min(a, b), std::max(a, b)});
+      m.add_crossing(s.vertex_of[i], sp.curve, sp.met);
   }
-  std::sort(m.tangents.begin(), m.tangents.end());
-  std::sort(m.crossings.begin(), m.crossings.end());
 }
 
 }  // namespace
+
+const Box& ArrangementBuilder::cycle_box(int cycle) {
+  return cycle_box_of(arr_, *scratch_, cycle);
+}
 
 Curve Arrangement::half_curve(int h) const {
   const Curve& c = edges[h / 2].curve;
@@ -625,7 +730,7 @@ ArrangementBuilder& ArrangementBuilder::operator=(ArrangementBuilder&&) noexcept
 
 const Arrangement& ArrangementBuilder::build(const std::vector<Curve>& curves,
                                              const std::vector<int>& segment_ids,
-                                             const Tolerances& tol) {
+                                             const Tolerances& tol, TrigMemo* trig) {
   Arrangement& arr = arr_;
   Scratch& s = *scratch_;
   arr.vertices.clear();
@@ -634,11 +739,15 @@ const Arrangement& ArrangementBuilder::build(const std::vector<Curve>& curves,
   arr.cycle_half_edges.clear();
   split_points(curves, tol.geometric, s.split, s.splits);
   merge_points(s, tol.geometric, arr.vertices);
-  build_edges(arr, s, curves, segment_ids, tol.geometric);
+  build_edges(arr, s, curves, segment_ids, tol.geometric, trig);
   collect_meetings(s);
   order_outgoing(arr, s, tol.geometric, tol.angular);
   link_half_edges(arr, s);
   trace_cycles(arr, s);
+  s.box.resize(arr.edges.size());
+  s.box_known.assign(arr.edges.size(), false);
+  s.cycle_box.resize(arr.cycles.size());
+  s.cycle_box_known.assign(arr.cycles.size(), false);
   assign_faces(arr, s);
   return arr;
 }

@@ -25,6 +25,7 @@ struct EdgeLabel {
 class EdgeLabels {
  public:
   EdgeLabels() = default;
+  explicit EdgeLabels(EdgeLabel l) : size_(1), local_{l, EdgeLabel{}} {}
   EdgeLabels(const EdgeLabels& o) { *this = o; }
   EdgeLabels& operator=(const EdgeLabels& o) {
     if (this != &o) {
@@ -79,11 +80,11 @@ struct ArrangementEdge {
 
 // A closed walk of half-edges with its face on the left. Its half-edges are
 // Arrangement::half_edges(cycle): one flat list for all cycles, so that a rebuilt
-// arrangement reuses its storage.
+// arrangement reuses its storage. Its box is ArrangementBuilder::cycle_box(cycle), found
+// when asked: most slices need only the free faces' boxes.
 struct ArrangementCycle {
   int first = 0, count = 0;  // its half-edges in Arrangement::cycle_half_edges
   double area = 0.0;         // signed: counterclockwise (> 0) around a bounded face
-  Box box;
   int face = -1;
   int component = -1;  // connected component of the graph
 };
@@ -136,6 +137,8 @@ struct Arrangement {
 // Builds arrangements one after another in the same buffers (its own and the arrangement's):
 // a slice of a small pair makes a few dozen edges, and allocating every working array per
 // slice cost more than the geometry. Not thread-safe: one per thread.
+class TrigMemo;  // slice/trig_memo.hpp
+
 class ArrangementBuilder {
  public:
   ArrangementBuilder();
@@ -143,9 +146,13 @@ class ArrangementBuilder {
   ArrangementBuilder(ArrangementBuilder&&) noexcept;
   ArrangementBuilder& operator=(ArrangementBuilder&&) noexcept;
   // The arrangement of `curves` (each oriented with its blocked side on the left); label ids
-  // are the curves' indices in `segment_ids`. Valid until the next build.
+  // are the curves' indices in `segment_ids`. Valid until the next build. `trig`, when
+  // given, holds the sines, cosines and tangents the curves' maker took at their ends.
   const Arrangement& build(const std::vector<Curve>& curves, const std::vector<int>& segment_ids,
-                           const Tolerances& tol);
+                           const Tolerances& tol, TrigMemo* trig = nullptr);
+  // The box of a cycle of the last build: the union of its edges' boxes, in the cycle's
+  // order. Found when first asked.
+  const Box& cycle_box(int cycle);
 
   struct Scratch;  // arrangement.cpp
 

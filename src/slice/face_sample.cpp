@@ -26,10 +26,8 @@ void scan_crossings(const Curve& c, double y, std::vector<double>& xs) {
 
 }  // namespace
 
-Vec2 face_sample(const Arrangement& arr, int face, const Tolerances& tol,
+Vec2 face_sample(const Arrangement& arr, int face, const Box& box, const Tolerances& tol,
                  FaceSampleScratch& scratch) {
-  Box box;
-  for (int c : arr.face_cycles(face)) box.add(arr.cycles[c].box);
   if (!arr.faces[face].bounded) {
     if (box.empty()) return {0.0, 0.0};
     const double reach = std::max(box.diagonal(), tol.size);

@@ -16,8 +16,8 @@ struct FaceSampleScratch {
 
 // For a bounded face: the midpoint of the widest inside interval on each of a few scan
 // lines, keeping the one farthest from the boundary. For the unbounded face: a point beyond
-// every cycle.
-Vec2 face_sample(const Arrangement& arr, int face, const Tolerances& tol,
+// every cycle. `box` is the union of the face's cycles' boxes, in face_cycles order.
+Vec2 face_sample(const Arrangement& arr, int face, const Box& box, const Tolerances& tol,
                  FaceSampleScratch& scratch);
 
 }  // namespace cslice

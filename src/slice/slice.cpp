@@ -16,6 +16,7 @@
 #include "cslice/slice.hpp"
 #include "slice/arrangement.hpp"
 #include "slice/face_sample.hpp"
+#include "slice/small_sort.hpp"
 
 namespace cslice {
 namespace {
@@ -30,12 +31,15 @@ struct SectorSide {
 struct SliceScratch {
   ArrangementBuilder arrangements;
   std::vector<Curve> curves;
-  std::vector<int> ids, nodes, vertex_ids;
-  std::vector<char> blocked, realizable;
+  std::vector<int> ids, vertex_ids;
+  std::vector<char> blocked, realizable, is_node;
+  std::vector<unsigned char> label_sides;  // per edge: kBlockedLeft | kBlockedRight
+  std::vector<int> lowest_label;           // per edge: the lowest contact segment id
   std::vector<Vec2> samples;
   std::vector<SectorSide> sides;
   FaceSampleScratch face_sample;
-  size_t segments_hint = 0;  // contact segments of the last slice: the next has about as many
+  size_t segments_hint = 0;     // contact segments of the last slice: the next has about as many
+  size_t graph_edges_hint = 0;  // the same for the contact graph's edges
 };
 
 class SliceBuilder {
@@ -66,7 +70,8 @@ class SliceBuilder {
       curves.push_back(s.curve);
       ids.push_back(s.id);
     }
-    arr_ = &scratch_.arrangements.build(curves, ids, pair_.tol);
+    arr_ = &scratch_.arrangements.build(curves, ids, pair_.tol, &contacts_.trig());
+    summarize_labels();
     label_faces();
     find_realizable_edges();
     find_degenerate_vertices();
@@ -91,7 +96,9 @@ class SliceBuilder {
         for (int h : arr_->half_edges(c))
           if (labels_block_left_only(h)) blocked_[f] = true;
       if (blocked_[f]) continue;
-      samples_[f] = face_sample(*arr_, int(f), pair_.tol, scratch_.face_sample);
+      Box box;
+      for (int c : arr_->face_cycles(int(f))) box.add(scratch_.arrangements.cycle_box(c));
+      samples_[f] = face_sample(*arr_, int(f), box, pair_.tol, scratch_.face_sample);
       // Blocked space lies inside the box of all contact segments, and the unbounded face's
       // sample lies beyond it: there the parts are apart, inside an enclosure's material when
       // the fixed part is one. Only an empty arrangement needs the direct test.
@@ -102,6 +109,36 @@ class SliceBuilder {
     }
   }
 
+  // Per edge, from one pass over its labels: on which of its sides they put blocked space,
+  // and the lowest contact segment among them (the one its pieces name). Read for each
+  // face, vertex and piece beside the edge.
+  static constexpr unsigned char kBlockedLeft = 1, kBlockedRight = 2;
+  void summarize_labels() {
+    std::vector<unsigned char>& sides = scratch_.label_sides;
+    std::vector<int>& lowest = scratch_.lowest_label;
+    const size_t edges = arr_->edges.size();  // read once: the stores below could alias it
+    sides.resize(edges);
+    lowest.resize(edges);
+    for (size_t e = 0; e < edges; ++e) {
+      const EdgeLabels& labels = arr_->edges[e].labels;
+      unsigned char side = 0;
+      int low = labels.front().segment;
+      for (const EdgeLabel& l : labels) {
+        side |= l.blocked_left ? kBlockedLeft : kBlockedRight;
+        low = std::min(low, l.segment);
+      }
+      sides[e] = side;
+      lowest[e] = low;
+    }
+  }
+  // Whether a label of h's edge puts blocked space on h's left, or on its right.
+  bool blocks_left_of(int h) const {
+    return scratch_.label_sides[h / 2] & (h % 2 == 0 ? kBlockedLeft : kBlockedRight);
+  }
+  bool blocks_right_of(int h) const {
+    return scratch_.label_sides[h / 2] & (h % 2 == 0 ? kBlockedRight : kBlockedLeft);
+  }
+
   // Whether the labels of h's edge put blocked space on h's left and not on its right. An
   // edge blocked from both sides by its own labels says nothing about the faces beside it:
   // it is a sliding fit (both faces blocked) or a sliver of blocked space thinner than the
@@ -109,24 +146,19 @@ class SliceBuilder {
   // critical orientation, two contact segments leaving a vertex-vertex contact at a shallow
   // angle, one ending within eps of the other), with free space on both sides. Such faces
   // are settled by their other edges or by the direct test.
-  bool labels_block_left_only(int h) const {
-    bool left = false, right = false;
-    for (const EdgeLabel& l : arr_->edges[h / 2].labels)
-      (Arrangement::left_is_blocked(h, l) ? left : right) = true;
-    return left && !right;
-  }
+  bool labels_block_left_only(int h) const { return blocks_left_of(h) && !blocks_right_of(h); }
 
   void find_realizable_edges() {
-    realizable_.assign(arr_->edges.size(), false);
-    for (size_t e = 0; e < arr_->edges.size(); ++e) {
+    const size_t edges = arr_->edges.size();  // read once: the stores below could alias it
+    realizable_.assign(edges, false);
+    for (size_t e = 0; e < edges; ++e) {
       const ArrangementEdge& edge = arr_->edges[e];
       if (!blocked_[arr_->face_of(int(2 * e))] || !blocked_[arr_->face_of(int(2 * e + 1))]) {
         realizable_[e] = true;
         continue;
       }
-      bool left = false, right = false;
-      for (const EdgeLabel& l : edge.labels) (l.blocked_left ? left : right) = true;
-      if (!(left && right) || blocked_at(point_at(edge.curve, 0.5))) continue;
+      const bool both = scratch_.label_sides[e] == (kBlockedLeft | kBlockedRight);
+      if (!both || blocked_at(point_at(edge.curve, 0.5))) continue;
       realizable_[e] = true;
       DegenerateContact d;
       d.segments = label_ids(int(e));
@@ -138,7 +170,7 @@ class SliceBuilder {
   std::vector<int> label_ids(int e) const {
     std::vector<int> ids;
     for (const EdgeLabel& l : arr_->edges[e].labels) ids.push_back(l.segment);
-    std::sort(ids.begin(), ids.end());
+    small_sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
     return ids;
   }
@@ -155,15 +187,14 @@ class SliceBuilder {
     const int d = int(out.size());
     // Per half-edge (reused buffer: called for most vertices of big slices): its direction,
     // whether a label of it blocks its left (the sector counterclockwise of it) and its
-    // right, found in one pass over its labels rather than once per pair of half-edges.
+    // right.
     std::vector<SectorSide>& side = scratch_.sides;
     side.resize(d);
     for (int i = 0; i < d; ++i) {
       SectorSide& x = side[i];
       x.dir = arr_->direction(out[i]);
-      x.blocks_left = x.blocks_right = false;
-      for (const EdgeLabel& l : arr_->edges[out[i] / 2].labels)
-        (Arrangement::left_is_blocked(out[i], l) ? x.blocks_left : x.blocks_right) = true;
+      x.blocks_left = blocks_left_of(out[i]);
+      x.blocks_right = blocks_right_of(out[i]);
     }
     bool all = true;
     for (int i = 0; i < d; ++i) {
@@ -189,18 +220,19 @@ class SliceBuilder {
   }
 
   void find_degenerate_vertices() {
-    for (size_t v = 0; v < arr_->vertices.size(); ++v) {
+    const size_t vertices = arr_->vertices.size();  // read once: the stores below could alias it
+    for (size_t v = 0; v < vertices; ++v) {
       const std::span<const int> out = arr_->outgoing(int(v));
       if (out.empty()) continue;
       bool all_blocked = true;
       for (int h : out)
-        all_blocked = all_blocked && blocked_[arr_->face_of(h)] && !realizable_[h / 2];
+        all_blocked = all_blocked && !realizable_[h / 2] && blocked_[arr_->face_of(h)];
       if (!all_blocked || !sectors_explained_locally(int(v))) continue;
       if (blocked_at(arr_->vertices[v])) continue;
       std::vector<int> ids;
       for (int h : out)
         for (const EdgeLabel& l : arr_->edges[h / 2].labels) ids.push_back(l.segment);
-      std::sort(ids.begin(), ids.end());
+      small_sort(ids.begin(), ids.end());
       ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
       add_degenerate_point(arr_->vertices[v], std::move(ids));
     }
@@ -228,17 +260,17 @@ class SliceBuilder {
       if (s.is_point && !blocked_at(s.curve.from)) add_degenerate_point(s.curve.from, {s.id});
   }
 
-  ContactPiece piece_of_half_edge(int h) const {
-    int lowest = arr_->edges[h / 2].labels.front().segment;
-    for (const EdgeLabel& l : arr_->edges[h / 2].labels) lowest = std::min(lowest, l.segment);
-    return {lowest, arr_->half_curve(h)};
+  // Appends the piece of half-edge h (built in place: a piece is mostly its curve).
+  void add_piece(std::vector<ContactPiece>& pieces, int h) const {
+    pieces.emplace_back(scratch_.lowest_label[h / 2], arr_->half_curve(h));
   }
 
   void collect_components() {
     // Sized once: growing them piece by piece cost several allocations per slice.
     slice_.realizable.reserve(std::count(realizable_.begin(), realizable_.end(), true));
-    for (size_t e = 0; e < arr_->edges.size(); ++e)
-      if (realizable_[e]) slice_.realizable.push_back(piece_of_half_edge(int(2 * e)));
+    const size_t edges = arr_->edges.size();  // read once: the stores below could alias it
+    for (size_t e = 0; e < edges; ++e)
+      if (realizable_[e]) add_piece(slice_.realizable, int(2 * e));
     slice_.free_components.reserve(std::count(blocked_.begin(), blocked_.end(), false));
     for (size_t f = 0; f < arr_->faces.size(); ++f) {
       if (blocked_[f]) {
@@ -253,7 +285,7 @@ class SliceBuilder {
       for (int c : arr_->face_cycles(int(f))) {
         std::vector<ContactPiece>& cycle = comp.boundary.emplace_back();
         cycle.reserve(arr_->cycles[c].count);
-        for (int h : arr_->half_edges(c)) cycle.push_back(piece_of_half_edge(h));
+        for (int h : arr_->half_edges(c)) add_piece(cycle, h);
       }
       comp.area = face_area(int(f));
       slice_.free_components.push_back(std::move(comp));
@@ -272,32 +304,38 @@ class SliceBuilder {
   }
 
   void build_contact_graph() {
-    std::vector<int>& nodes = scratch_.nodes;  // copied out once complete
+    // The nodes, marked by id (ids are indices of contact segments): read back in order,
+    // they are sorted and each once, without sorting a list of them with its repeats.
+    std::vector<char>& is_node = scratch_.is_node;
+    is_node.assign(slice_.contact_segments.size(), false);
+    slice_.contact_graph.edges.reserve(scratch_.graph_edges_hint);
     std::vector<int>& ids = scratch_.vertex_ids;
-    nodes.clear();
     auto add_meetings = [&](const std::vector<int>& at_ids, Vec2 at) {
       for (size_t i = 0; i < at_ids.size(); ++i)
         for (size_t j = i + 1; j < at_ids.size(); ++j)
           slice_.contact_graph.edges.push_back({at_ids[i], at_ids[j], at});
     };
-    for (size_t v = 0; v < arr_->vertices.size(); ++v) {
+    const size_t vertices = arr_->vertices.size();  // read once: the stores below could alias it
+    for (size_t v = 0; v < vertices; ++v) {
       ids.clear();
       for (int h : arr_->outgoing(int(v)))
         if (realizable_[h / 2])
           for (const EdgeLabel& l : arr_->edges[h / 2].labels) ids.push_back(l.segment);
       if (ids.empty()) continue;
-      std::sort(ids.begin(), ids.end());
+      small_sort(ids.begin(), ids.end());
       ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-      nodes.insert(nodes.end(), ids.begin(), ids.end());
+      for (int id : ids) is_node[id] = true;
       add_meetings(ids, arr_->vertices[v]);
     }
     for (const DegenerateContact& d : slice_.degenerate) {
-      nodes.insert(nodes.end(), d.segments.begin(), d.segments.end());
+      for (int id : d.segments) is_node[id] = true;
       if (d.is_point) add_meetings(d.segments, d.curve.from);
     }
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    slice_.contact_graph.nodes.assign(nodes.begin(), nodes.end());
+    std::vector<int>& nodes = slice_.contact_graph.nodes;
+    nodes.reserve(std::count(is_node.begin(), is_node.end(), true));
+    for (size_t id = 0; id < is_node.size(); ++id)
+      if (is_node[id]) nodes.push_back(int(id));
+    scratch_.graph_edges_hint = slice_.contact_graph.edges.size();
   }
 
   const Pair& pair_;

@@ -2,18 +2,51 @@
 #include "slice/split_points.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <numeric>
-#include <tuple>
 
 namespace cslice {
 
 void SplitsByCurve::build(const std::vector<SplitPoint>& splits, size_t first, size_t curves) {
+  // Sizes read once: the stores below could alias them, so a loop bound on size() is
+  // reloaded every iteration.
+  const size_t n = splits.size();
   start.assign(curves + 1, 0);
-  index.resize(splits.size() - first);
-  for (size_t k = first; k < splits.size(); ++k) ++start[splits[k].curve + 1];
+  index.resize(n - first);
+  for (size_t k = first; k < n; ++k) ++start[splits[k].curve + 1];
   for (size_t c = 0; c < curves; ++c) start[c + 1] += start[c];
   fill.assign(start.begin(), start.end() - 1);
-  for (size_t k = first; k < splits.size(); ++k) index[fill[splits[k].curve]++] = int(k);
+  for (size_t k = first; k < n; ++k) index[fill[splits[k].curve]++] = int(k);
+}
+
+bool ClosestPoints::insert(int curve, Vec2 p) {
+  const uint64_t x = std::bit_cast<uint64_t>(p.x), y = std::bit_cast<uint64_t>(p.y);
+  if (2 * (keys_.size() + 1) > slot_.size()) {  // grow, and place the keys again
+    slot_.assign(std::max<size_t>(64, 4 * slot_.size()), 0);
+    used_.clear();
+    std::vector<Key> keys;
+    keys.swap(keys_);
+    for (const Key& k : keys)
+      insert(k.curve, {std::bit_cast<double>(k.x), std::bit_cast<double>(k.y)});
+  }
+  uint64_t h = (x * 0x9E3779B97F4A7C15ull) ^ (y * 0xC2B2AE3D27D4EB4Full) ^ uint64_t(curve);
+  h ^= h >> 29;
+  const size_t mask = slot_.size() - 1;
+  size_t k = size_t(h) & mask;
+  for (; slot_[k] != 0; k = (k + 1) & mask) {
+    const Key& o = keys_[slot_[k] - 1];
+    if (o.x == x && o.y == y && o.curve == curve) return true;
+  }
+  keys_.push_back({x, y, curve});
+  slot_[k] = int(keys_.size());
+  used_.push_back(k);
+  return false;
+}
+
+void ClosestPoints::clear() {
+  for (size_t k : used_) slot_[k] = 0;
+  used_.clear();
+  keys_.clear();
 }
 
 namespace {
@@ -26,14 +59,17 @@ void candidate_pairs(SplitScratch& s) {
   std::sort(s.order.begin(), s.order.end(),
             [&](int a, int b) { return boxes[a].lo.x < boxes[b].lo.x; });
   s.sorted.resize(boxes.size());  // contiguous for the sweep
-  for (size_t i = 0; i < s.order.size(); ++i) s.sorted[i] = boxes[s.order[i]];
+  const size_t n = boxes.size();
+  const Box* sorted = s.sorted.data();
+  const int* order = s.order.data();
+  for (size_t i = 0; i < n; ++i) s.sorted[i] = boxes[order[i]];
   s.pairs.clear();
-  for (size_t i = 0; i < s.sorted.size(); ++i) {
-    const Box& a = s.sorted[i];
-    for (size_t j = i + 1; j < s.sorted.size() && s.sorted[j].lo.x <= a.hi.x; ++j) {
-      const Box& b = s.sorted[j];  // Box::overlaps, knowing b.lo.x <= a.hi.x
+  for (size_t i = 0; i < n; ++i) {
+    const Box& a = sorted[i];
+    for (size_t j = i + 1; j < n && sorted[j].lo.x <= a.hi.x; ++j) {
+      const Box& b = sorted[j];  // Box::overlaps, knowing b.lo.x <= a.hi.x
       if (!(b.hi.x < a.lo.x || b.lo.y > a.hi.y || b.hi.y < a.lo.y))
-        s.pairs.emplace_back(s.order[i], s.order[j]);
+        s.pairs.emplace_back(order[i], order[j]);
     }
   }
 }
@@ -47,63 +83,107 @@ void candidate_pairs(SplitScratch& s) {
 // sqrt(eps / curvature) or eps / angle. So every split point of one curve inside a shared
 // piece, or within eps of a curve it meets, is copied to the other, at the same point; the
 // pieces between them then merge into one edge. Two passes carry points along chains.
-void share_split_points(const std::vector<Curve>& curves, SplitScratch& s,
-                        std::vector<SplitPoint>& splits, double eps) {
-  if (s.shared.empty()) return;
-  size_t first_new = 0;
-  for (int pass = 0; pass < 2; ++pass) {
-    SplitsByCurve& fresh = s.fresh;
-    fresh.build(splits, first_new, curves.size());
-    if (first_new != 0) s.all.build(splits, 0, curves.size());
-    const SplitsByCurve& all = first_new == 0 ? fresh : s.all;
-    s.grouped = first_new == 0 ? SplitScratch::Grouped::fresh : SplitScratch::Grouped::all;
-    // The fresh points in curve order, compact, each with where it is on its own curve.
-    std::vector<FreshSplit>& points = s.points;
-    points.resize(fresh.index.size());
-    for (size_t i = 0; i < points.size(); ++i) {
-      const SplitPoint& sp = splits[fresh.index[i]];
-      points[i] = {sp.t, sp.met, sp.curve, sp.p, {}, false};
-    }
-    // Where a point is on its own curve costs a sine and cosine on an arc: found when asked.
-    auto on_curve = [&](FreshSplit& p) {
-      if (!p.located) p.on_curve = point_at(curves[p.curve], p.t);
-      p.located = true;
-      return p.on_curve;
-    };
-    // A point within eps of one the curve already has would join that one's vertex anyway.
-    auto has_point_near = [&](int c, Vec2 p) {
-      for (int k : all.of(c))
-        if (length_squared(splits[k].p - p) <= eps * eps) return true;
-      return false;
-    };
-    std::vector<SplitPoint>& added = s.added;
-    added.clear();
-    for (const SharedPiece& sp : s.shared) {
-      for (const auto& [from, to, lo, hi] :
-           {std::tuple{sp.a, sp.b, sp.a_lo, sp.a_hi}, std::tuple{sp.b, sp.a, sp.b_lo, sp.b_hi}}) {
-        for (int i = fresh.start[from]; i < fresh.start[from + 1]; ++i) {
-          FreshSplit& p = points[i];
-          if (p.t < lo || p.t > hi) continue;
-          if (sp.near) {
-            if (p.met == to) continue;  // where the two meet: already on both
-            // Measured from the curve's own point, so that a vertex carried onto a curve
-            // passes on to the curves that one runs beside. Outside the other's box grown by
-            // eps is farther than eps from it.
-            const Vec2 q = on_curve(p);
-            const Box& box = s.boxes[to];
-            if (q.x < box.lo.x || q.x > box.hi.x || q.y < box.lo.y || q.y > box.hi.y) continue;
-            if (has_point_near(to, p.p) || distance_to_curve(curves[to], q) > eps) continue;
-          }
-          added.push_back({to, closest_parameter(curves[to], p.p), p.p});
+//
+// A copy that repeats a split point exactly (curve, t and p: a point copied onto a curve
+// along two paths, as where several collinear curves share pieces at a perfect fit) is not
+// made: it would join that point's vertex and lie next to it along the curve, and carry
+// nothing further that the point does not.
+class Sharer {
+ public:
+  Sharer(const std::vector<Curve>& curves, SplitScratch& s, std::vector<SplitPoint>& splits,
+         double eps)
+      : curves_(curves), s_(s), splits_(splits), eps_(eps) {}
+
+  void run() {
+    if (s_.shared.empty()) return;
+    s_.copied.clear();
+    for (int i : s_.closest_hits) s_.copied.insert(splits_[i].curve, splits_[i].p);
+    size_t first_new = 0;
+    for (int pass = 0; pass < 2; ++pass) {
+      SplitsByCurve& fresh = s_.fresh;
+      fresh.build(splits_, first_new, curves_.size());
+      if (first_new != 0) s_.all.build(splits_, 0, curves_.size());
+      all_ = first_new == 0 ? &fresh : &s_.all;
+      s_.grouped = first_new == 0 ? SplitScratch::Grouped::fresh : SplitScratch::Grouped::all;
+      // The fresh points in curve order, compact; where each is on its own curve (a sine and
+      // cosine on an arc) is found when asked.
+      std::vector<FreshSplit>& points = s_.points;
+      const size_t n = fresh.index.size();
+      points.resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        const SplitPoint& sp = splits_[fresh.index[i]];
+        FreshSplit& p = points[i];
+        p.t = sp.t;
+        p.met = sp.met;
+        p.curve = sp.curve;
+        p.p = sp.p;
+        p.located = false;
+      }
+      s_.added.clear();
+      for (const SharedPiece& sp : s_.shared) {
+        if (sp.near) {
+          copy_near(sp.a, sp.b);
+          copy_near(sp.b, sp.a);
+        } else {
+          copy_inside(sp.a, sp.b, sp.a_lo, sp.a_hi);
+          copy_inside(sp.b, sp.a, sp.b_lo, sp.b_hi);
         }
       }
+      if (s_.added.empty()) return;
+      first_new = splits_.size();
+      splits_.insert(splits_.end(), s_.added.begin(), s_.added.end());
+      s_.grouped = SplitScratch::Grouped::none;  // the points just added are in neither
     }
-    if (added.empty()) return;
-    first_new = splits.size();
-    splits.insert(splits.end(), added.begin(), added.end());
-    s.grouped = SplitScratch::Grouped::none;  // the points just added are in neither
   }
-}
+
+ private:
+  std::span<FreshSplit> fresh_of(int c) {
+    return {s_.points.data() + s_.fresh.start[c], s_.points.data() + s_.fresh.start[c + 1]};
+  }
+
+  void add(int to, Vec2 p) {
+    if (s_.copied.insert(to, p)) return;  // repeats a split point exactly
+    s_.added.push_back({to, closest_parameter(curves_[to], p), p});
+  }
+
+  // The fresh points of `from` with t in [lo, hi], onto `to`.
+  void copy_inside(int from, int to, double lo, double hi) {
+    for (const FreshSplit& p : fresh_of(from))
+      if (!(p.t < lo || p.t > hi)) add(to, p.p);
+  }
+
+  // The fresh points of `from` within eps of `to`, except where the two meet (already on
+  // both), and those within eps of a point `to` has (they would join its vertex anyway).
+  // Measured from the curve's own point, so that a vertex carried onto a curve passes on to
+  // the curves that one runs beside. Outside the other's box grown by eps is farther than
+  // eps from it. (Their t lies in [0, 1], the whole range a near piece spans.)
+  void copy_near(int from, int to) {
+    const Box& box = s_.boxes[to];
+    for (FreshSplit& p : fresh_of(from)) {
+      if (p.met == to) continue;
+      if (!p.located) {
+        p.on_curve = point_at(curves_[p.curve], p.t);
+        p.located = true;
+      }
+      const Vec2 q = p.on_curve;
+      if (q.x < box.lo.x || q.x > box.hi.x || q.y < box.lo.y || q.y > box.hi.y) continue;
+      if (has_point_near(to, p.p) || distance_to_curve(curves_[to], q) > eps_) continue;
+      add(to, p.p);
+    }
+  }
+
+  bool has_point_near(int c, Vec2 p) const {
+    for (int k : all_->of(c))
+      if (length_squared(splits_[k].p - p) <= eps_ * eps_) return true;
+    return false;
+  }
+
+  const std::vector<Curve>& curves_;
+  SplitScratch& s_;
+  std::vector<SplitPoint>& splits_;
+  double eps_;
+  const SplitsByCurve* all_ = nullptr;
+};
 
 }  // namespace
 
@@ -111,12 +191,17 @@ void split_points(const std::vector<Curve>& curves, double eps, SplitScratch& s,
                   std::vector<SplitPoint>& splits) {
   splits.clear();
   s.shared.clear();
+  s.closest_hits.clear();
   s.boxes.clear();
   s.grouped = SplitScratch::Grouped::none;
   for (size_t i = 0; i < curves.size(); ++i) {
     splits.push_back({int(i), 0.0, curves[i].from});
     splits.push_back({int(i), 1.0, curves[i].to});
-    s.boxes.push_back(bounding_box(curves[i]).inflated(eps));
+    Box& box = s.boxes.emplace_back(bounding_box(curves[i]));  // inflated(eps), inline
+    if (!box.empty()) {
+      box.lo = {box.lo.x - eps, box.lo.y - eps};
+      box.hi = {box.hi.x + eps, box.hi.y + eps};
+    }
   }
   candidate_pairs(s);
   for (auto [i, j] : s.pairs) {
@@ -137,13 +222,16 @@ void split_points(const std::vector<Curve>& curves, double eps, SplitScratch& s,
         piece = true;
         splits.push_back({i, h.ta1, h.point_end});
         splits.push_back({j, h.tb1, h.point_end});
+        // The intersection step takes a piece's parameters on b as closest_parameter.
+        s.closest_hits.push_back(int(splits.size()) - 3);
+        s.closest_hits.push_back(int(splits.size()) - 1);
         s.shared.push_back({i, j, std::min(h.ta0, h.ta1), std::max(h.ta0, h.ta1),
                             std::min(h.tb0, h.tb1), std::max(h.tb0, h.tb1)});
       }
     }
     if (x.count > 0 && !piece) s.shared.push_back({i, j, 0.0, 1.0, 0.0, 1.0, true});
   }
-  share_split_points(curves, s, splits, eps);
+  Sharer(curves, s, splits, eps).run();
 }
 
 }  // namespace cslice

@@ -3,6 +3,7 @@
 // curves that run within eps of each other, so that their pieces coincide.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <utility>
 #include <vector>
@@ -49,6 +50,25 @@ struct FreshSplit {
   bool located;
 };
 
+// Split points (curve, p) whose t is closest_parameter(curve, p), by the bits of p: a copy
+// of p onto that curve would repeat one of them exactly (same curve, t and p), and adds
+// nothing, so it is not made. Open addressing; cleared slot by slot, as few are used.
+class ClosestPoints {
+ public:
+  // Whether (curve, p) is in the set; adds it when not.
+  bool insert(int curve, Vec2 p);
+  void clear();
+
+ private:
+  struct Key {
+    uint64_t x, y;
+    int curve;
+  };
+  std::vector<int> slot_;  // index + 1 into keys_, or 0
+  std::vector<Key> keys_;
+  std::vector<size_t> used_;
+};
+
 // Buffers of split_points, kept between calls (one per thread): small slices would
 // otherwise spend more in the allocator than in the geometry.
 struct SplitScratch {
@@ -60,6 +80,8 @@ struct SplitScratch {
   SplitsByCurve fresh, all;
   std::vector<FreshSplit> points;
   std::vector<SplitPoint> added;
+  std::vector<int> closest_hits;  // split points of shared pieces whose t is closest_parameter
+  ClosestPoints copied;
   // After split_points: which of `fresh` and `all` groups every split point, as
   // SplitsByCurve::build(splits, 0, curves) would, when one does (no points were added
   // after it was built); null when neither does.
