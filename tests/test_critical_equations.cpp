@@ -1,11 +1,13 @@
 // The criticality equations against the geometry they describe: the closed forms of the pair
 // equations (an end on a curve, two curves tangent) evaluated at many orientations against the
 // contact curves rebuilt there, and roots sought only within windows of orientations against
-// the roots over the whole turn.
+// the roots over the whole turn. Also the crossings of whole curves that bound where triples
+// can meet, against the general intersection of the same curves.
 #include <gtest/gtest.h>
 
 #include <random>
 
+#include "criticals/candidates.hpp"
 #include "criticals/events.hpp"
 #include "criticals/families.hpp"
 #include "criticals/trig.hpp"
@@ -140,4 +142,46 @@ TEST(CriticalEquations, AWindowReachingAChartBorderFindsTheRootOnIt) {
       for (double root : r.roots) best = std::min(best, std::fabs(wrap_angle(root - border)));
       EXPECT_LE(best, 1e-12) << "border " << border << " offset " << offset;
     }
+}
+
+TEST(CriticalEquations, WholeCurvesCrossWhereTheirIntersectionSays) {
+  // Lines through random segments, circles of random arcs; the general intersection of the
+  // same whole curves (lines drawn 4 sizes past their ends, full circles) is the reference.
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), radius(0.05, 1.5);
+  const double size = 4.0, eps = 1e-9 * size;
+  auto random_cover = [&](bool arc) {
+    if (arc) return make_arc({u(rng), u(rng)}, radius(rng), kPi * u(rng), 2.0 * u(rng));
+    return make_segment({u(rng), u(rng)}, {u(rng), u(rng)});
+  };
+  auto whole = [&](const Curve& c) {
+    if (c.is_arc()) return make_circle(c.center, c.radius);
+    const Vec2 reach = (4.0 * size / distance(c.from, c.to)) * (c.to - c.from);
+    return make_segment(c.from - reach, c.to + reach);
+  };
+  int crossings = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const Curve x = random_cover(trial % 2 == 1), y = random_cover(trial % 4 >= 2);
+    CurveCrossings mine;
+    const bool crossed = whole_curves_cross(x, y, size, eps, mine);
+    const Curve wx = whole(x), wy = whole(y);
+    const Intersection ref = intersect(wx, wy, eps);
+    if (ref.kind == IntersectionKind::none || ref.kind == IntersectionKind::overlapping ||
+        ref.kind == IntersectionKind::tangent) {
+      EXPECT_FALSE(crossed && ref.kind == IntersectionKind::overlapping) << trial;
+      continue;
+    }
+    ASSERT_TRUE(crossed) << "trial " << trial;
+    ASSERT_EQ(mine.count, ref.count) << "trial " << trial;
+    for (int h = 0; h < ref.count; ++h) {
+      const IntersectionHit& hit = ref.hits[size_t(h)];
+      const double sine = std::fabs(cross(tangent_at(wx, hit.ta0), tangent_at(wy, hit.tb0)));
+      int k = distance(mine.point[0], hit.point) <= distance(mine.point[1], hit.point) ? 0 : 1;
+      if (mine.count == 1) k = 0;
+      EXPECT_LE(distance(mine.point[size_t(k)], hit.point), 1e-9) << "trial " << trial;
+      EXPECT_NEAR(mine.sine[size_t(k)], sine, 1e-9) << "trial " << trial;
+      ++crossings;
+    }
+  }
+  EXPECT_GT(crossings, 2000);
 }

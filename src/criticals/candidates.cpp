@@ -99,17 +99,70 @@ bool may_meet(const BinEntry& x, const BinEntry& y) {
   return distance_between(x.cover, y.cover) <= reach;
 }
 
-// The whole curve a cover lies on, as far as the pair reaches: the full circle of an arc,
-// the line of a segment extended well past the pair's size each way. Covers drift within the
-// bin, so two of them can come to cross anywhere their whole curves cross, not only where the
-// covers themselves cross at the bin's middle.
-Curve whole_curve(const Curve& c, double size) {
-  if (c.is_arc()) return make_circle(c.center, c.radius);
-  const double length = distance(c.from, c.to);
-  if (length == 0.0) return c;
-  const Vec2 reach = (4.0 * size / length) * (c.to - c.from);
-  return make_segment(c.from - reach, c.to + reach);
+// Along the line of segment c, how far (in units of its length) the whole curve reaches.
+double line_reach(const Curve& c, double size) {
+  return 4.0 * size / distance(c.from, c.to);
 }
+
+bool lines_cross(const Curve& x, const Curve& y, double size, double eps, CurveCrossings& out) {
+  const Vec2 d = x.to - x.from, e = y.to - y.from, w = y.from - x.from;
+  const double den = cross(d, e), sine = std::fabs(den) / (length(d) * length(e));
+  if (!(sine * size > eps)) return false;  // parallel to within eps over the pair
+  const double t = cross(w, e) / den, s = cross(w, d) / den;
+  const double rx = line_reach(x, size), ry = line_reach(y, size);
+  if (t < -rx || t > 1.0 + rx || s < -ry || s > 1.0 + ry) return false;
+  out.point[0] = x.from + t * d;
+  out.sine[0] = sine;
+  out.count = 1;
+  return true;
+}
+
+// Line x, circle of y: the chord's half-length h off the foot of the centre; the line meets
+// the circle's radius at angle acos(h / r), so the curves cross at sine h / r.
+bool line_crosses_circle(const Curve& x, const Curve& y, double size, double eps,
+                         CurveCrossings& out) {
+  const double len = distance(x.from, x.to);
+  const Vec2 u = (1.0 / len) * (x.to - x.from), w = y.center - x.from;
+  const double along = dot(w, u), off = cross(u, w);
+  const double h = std::sqrt(std::max(y.radius * y.radius - off * off, 0.0));
+  if (!(h > eps) || !(y.radius > eps)) return false;  // apart, tangent, or a point
+  const double reach = line_reach(x, size) * len;
+  for (double t : {along - h, along + h}) {
+    if (t < -reach || t > len + reach) continue;
+    out.point[size_t(out.count)] = x.from + t * u;
+    out.sine[size_t(out.count++)] = h / y.radius;
+  }
+  return out.count > 0;
+}
+
+bool circles_cross(const Curve& x, const Curve& y, double eps, CurveCrossings& out) {
+  const Vec2 between = y.center - x.center;
+  const double d = length(between), r1 = x.radius, r2 = y.radius;
+  if (!(r1 > eps) || !(r2 > eps) || !(d > eps)) return false;  // a point, or concentric
+  const double a = (d * d + r1 * r1 - r2 * r2) / (2.0 * d);
+  const double h = std::sqrt(std::max(r1 * r1 - a * a, 0.0));
+  if (!(h > eps)) return false;  // apart, or touching
+  const Vec2 base = x.center + (a / d) * between, across = (h / d) * perp_left(between);
+  for (Vec2 p : {base - across, base + across}) {
+    out.point[size_t(out.count)] = p;
+    out.sine[size_t(out.count++)] = std::fabs(cross(p - x.center, p - y.center)) / (r1 * r2);
+  }
+  return true;
+}
+
+}  // namespace
+
+bool whole_curves_cross(const Curve& x, const Curve& y, double size, double eps,
+                        CurveCrossings& out) {
+  const bool x_line = x.is_segment(), y_line = y.is_segment();
+  if ((x_line && x.from == x.to) || (y_line && y.from == y.to)) return false;
+  if (x_line && y_line) return lines_cross(x, y, size, eps, out);
+  if (x_line) return line_crosses_circle(x, y, size, eps, out);
+  if (y_line) return line_crosses_circle(y, x, size, eps, out);
+  return circles_cross(x, y, eps, out);
+}
+
+namespace {
 
 // Where two covers' whole curves cross at an angle phi, a meeting of their contact segments
 // within the bin stays within the meeting of two bands as wide as their margins:
@@ -135,24 +188,23 @@ bool within(const BinEntry& e, Vec2 p, double reach) {
 }
 
 WholeCrossing whole_crossing(const BinEntry& x, const BinEntry& y, double geometric, double size) {
-  const Curve wx = whole_curve(x.cover, size), wy = whole_curve(y.cover, size);
-  const Intersection meet = intersect(wx, wy, geometric);
+  CurveCrossings meet;
   WholeCrossing w;
-  if (meet.kind == IntersectionKind::none || meet.kind == IntersectionKind::overlapping) {
+  if (!whole_curves_cross(x.cover, y.cover, size, geometric, meet)) {
     w.unbounded = true;
     return w;
   }
   const double drift = 2.0 * (x.margin + y.margin);
   for (int h = 0; h < meet.count; ++h) {
-    const IntersectionHit& hit = meet.hits[h];
-    const double sine = std::fabs(cross(tangent_at(wx, hit.ta0), tangent_at(wy, hit.tb0)));
+    const double sine = meet.sine[size_t(h)];
     if (drift >= sine * size) {  // could drift across the whole pair
       w.unbounded = true;
       return w;
     }
     const double reach = drift / sine;
-    if (!within(x, hit.point, reach) || !within(y, hit.point, reach)) continue;
-    w.point[w.count] = hit.point;
+    const Vec2 point = meet.point[size_t(h)];
+    if (!within(x, point, reach) || !within(y, point, reach)) continue;
+    w.point[w.count] = point;
     w.reach[w.count++] = reach;
   }
   return w;

@@ -36,6 +36,21 @@ struct BinEntry {
 std::vector<std::vector<int>> alive_families_by_bin(const std::vector<ContactFamily>& families,
                                                     const Binning& binning);
 
+// Where the whole curves two covers lie on cross (the full circle of an arc; the line of a
+// segment, as far as 4 sizes past its ends), each crossing with the sine of the angle between
+// the curves there. Covers drift within a bin, so two of them can come to cross anywhere
+// their whole curves cross, not only where the covers themselves cross at the bin's middle.
+// Written out per pair of shapes: whole curves need none of the arc parameters and end tests
+// of `intersect`, which were most of the meeting pass. False when the curves do not cross,
+// run together, or touch within eps (a tangency, crossing at angle ~0): no bound then.
+struct CurveCrossings {
+  int count = 0;
+  std::array<Vec2, 2> point{};
+  std::array<double, 2> sine{};
+};
+bool whole_curves_cross(const Curve& x, const Curve& y, double size, double eps,
+                        CurveCrossings& out);
+
 // The entries of one bin, sorted by the left side of their boxes.
 std::vector<BinEntry> bin_entries(const std::vector<ContactFamily>& families,
                                   const std::vector<int>& alive, const Binning& binning, int bin,
