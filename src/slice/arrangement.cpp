@@ -16,6 +16,7 @@
 #include <numeric>
 
 #include "parts/loop_queries.hpp"
+#include "slice/arrangement_steps.hpp"
 #include "slice/close_points.hpp"
 #include "slice/small_sort.hpp"
 #include "slice/split_points.hpp"
@@ -474,10 +475,7 @@ double segment_angle(std::vector<Scratch::AngleMemo>& memo, int curve, bool forw
 // every later step reads the order cyclically (next around a face, sectors between
 // neighbours), so those are left in half-edge order without computing their angles.
 void order_outgoing(Arrangement& arr, Scratch& s, double eps, double angular_eps) {
-  group_by(
-      2 * arr.edges.size(), arr.vertices.size(),
-      [&](size_t h) { return h % 2 == 0 ? arr.edges[h / 2].u : arr.edges[h / 2].v; },
-      arr.outgoing_start, arr.outgoing_edges, s.fill);
+  group_by_origin(arr, s.fill);
   std::vector<Direction>& dirs = s.dirs;  // by half-edge, those at vertices of degree >= 3
   dirs.resize(2 * arr.edges.size());
   const size_t vertices = arr.vertices.size();  // read once: the stores below could alias it
@@ -524,12 +522,18 @@ void link_half_edges(Arrangement& arr, Scratch& s) {
     const std::span<const int> out = arr.outgoing(v);
     for (size_t i = 0; i < out.size(); ++i) position[out[i]] = int(i);
   }
-  arr.next.assign(n, -1);
-  for (size_t h = 0; h < n; ++h) {
-    const int twin = int(h) ^ 1;
-    const std::span<const int> out = arr.outgoing(arr.target(int(h)));
-    const int deg = int(out.size());
-    arr.next[h] = out[(position[twin] - 1 + deg) % deg];
+  // The half-edge just clockwise of `twin` among those leaving w.
+  auto clockwise_of = [&](int w, int twin) {
+    const int first = arr.outgoing_start[w], deg = arr.outgoing_start[w + 1] - first;
+    return arr.outgoing_edges[first + (position[twin] - 1 + deg) % deg];
+  };
+  arr.next.resize(n);  // every entry is set below
+  // By edge: its forward half-edge ends at v, its backward one at u (no choice by parity).
+  const size_t edges = arr.edges.size();  // read once: the stores below could alias it
+  for (size_t e = 0; e < edges; ++e) {
+    const int h = int(2 * e);
+    arr.next[h] = clockwise_of(arr.edges[e].v, h + 1);
+    arr.next[h + 1] = clockwise_of(arr.edges[e].u, h);
   }
 }
 
@@ -540,15 +544,27 @@ void vertex_components(const Arrangement& arr, Scratch& s) {
   for (size_t v = 0; v < s.comp.size(); ++v) s.comp[v] = s.uf.find(int(v));
 }
 
-void trace_cycles(Arrangement& arr, Scratch& s) {
+// signed_area_contribution(c), the same expression, with the sine of an arc's sweep from
+// `trig` when given (an arc cut nowhere keeps its sweep from slice to slice).
+double area_term(const Curve& c, TrigMemo* trig) {
+  double a = 0.5 * cross(c.from, c.to);
+  if (c.is_arc())
+    a += 0.5 * c.radius * c.radius * (c.sweep - (trig ? trig->sin(c.sweep) : std::sin(c.sweep)));
+  return a;
+}
+
+void trace_cycles(Arrangement& arr, Scratch& s, TrigMemo* trig) {
   const size_t n = 2 * arr.edges.size();
   vertex_components(arr, s);
   // Per edge, once: its area term (the twin's is the negation: the chord's cross product and
   // the circular segment both change sign).
   std::vector<double>& area = s.area;
   const size_t edges = arr.edges.size();  // read once: the stores below could alias it
-  area.resize(edges);
-  for (size_t e = 0; e < edges; ++e) area[e] = signed_area_contribution(arr.edges[e].curve);
+  area.resize(n);  // per half-edge: the walk below adds without choosing by parity
+  for (size_t e = 0; e < edges; ++e) {
+    area[2 * e] = area_term(arr.edges[e].curve, trig);
+    area[2 * e + 1] = -area[2 * e];
+  }
   arr.cycle_of.assign(n, -1);
   arr.cycle_half_edges.reserve(n);
   for (size_t start = 0; start < n; ++start) {
@@ -560,7 +576,7 @@ void trace_cycles(Arrangement& arr, Scratch& s) {
     do {
       arr.cycle_of[h] = int(arr.cycles.size());
       arr.cycle_half_edges.push_back(h);
-      cycle.area += h % 2 == 0 ? area[h / 2] : -area[h / 2];
+      cycle.area += area[h];
       h = arr.next[h];
     } while (h != int(start) && arr.cycle_of[h] < 0);
     cycle.count = int(arr.cycle_half_edges.size()) - cycle.first;
@@ -696,13 +712,14 @@ void assign_faces(Arrangement& arr, Scratch& s) {
 }
 
 // The pairs of curves the intersection step found tangent anywhere, or crossing at a vertex.
-void collect_meetings(Scratch& s) {
+void collect_meetings(Scratch& s, size_t curves) {
   Meetings& m = s.meetings;
   m.clear();
   // A meeting makes a split point on each curve, at the same point (so at the same vertex)
   // and the same way: the one on the lower curve tells it.
+  // The first 2 * curves are the curves' ends, no meetings (see split_points).
   const size_t count = s.splits.size();  // read once: the stores below could alias it
-  for (size_t i = 0; i < count; ++i) {
+  for (size_t i = 2 * curves; i < count; ++i) {
     const SplitPoint& sp = s.splits[i];
     if (sp.how == Meeting::other || sp.curve > sp.met) continue;
     if (sp.how == Meeting::tangent)
@@ -740,10 +757,10 @@ const Arrangement& ArrangementBuilder::build(const std::vector<Curve>& curves,
   split_points(curves, tol.geometric, s.split, s.splits);
   merge_points(s, tol.geometric, arr.vertices);
   build_edges(arr, s, curves, segment_ids, tol.geometric, trig);
-  collect_meetings(s);
+  collect_meetings(s, curves.size());
   order_outgoing(arr, s, tol.geometric, tol.angular);
   link_half_edges(arr, s);
-  trace_cycles(arr, s);
+  trace_cycles(arr, s, trig);
   s.box.resize(arr.edges.size());
   s.box_known.assign(arr.edges.size(), false);
   s.cycle_box.resize(arr.cycles.size());

@@ -35,7 +35,12 @@ class EdgeLabels {
     }
     return *this;
   }
-  EdgeLabels(EdgeLabels&& o) noexcept { *this = std::move(o); }
+  // Member by member (not default-construct, then assign: every edge is moved twice, once
+  // into its piece and once into the arrangement).
+  EdgeLabels(EdgeLabels&& o) noexcept
+      : size_(o.size_), local_(o.local_), more_(std::move(o.more_)) {
+    o.size_ = 0;
+  }
   EdgeLabels& operator=(EdgeLabels&& o) noexcept {
     size_ = o.size_;
     local_ = o.local_;

@@ -92,10 +92,10 @@ class SliceBuilder {
     blocked_.assign(arr_->faces.size(), false);
     samples_.assign(arr_->faces.size(), Vec2{});
     for (size_t f = 0; f < arr_->faces.size(); ++f) {
-      for (int c : arr_->face_cycles(int(f)))
-        for (int h : arr_->half_edges(c))
-          if (labels_block_left_only(h)) blocked_[f] = true;
-      if (blocked_[f]) continue;
+      if (labels_block(int(f))) {
+        blocked_[f] = true;
+        continue;
+      }
       Box box;
       for (int c : arr_->face_cycles(int(f))) box.add(scratch_.arrangements.cycle_box(c));
       samples_[f] = face_sample(*arr_, int(f), box, pair_.tol, scratch_.face_sample);
@@ -107,6 +107,15 @@ class SliceBuilder {
       else
         blocked_[f] = blocked_at(samples_[f]);
     }
+  }
+
+  // Whether a label along face f's boundary puts blocked space in f (and not on the other
+  // side too): the first such half-edge settles it.
+  bool labels_block(int f) const {
+    for (int c : arr_->face_cycles(f))
+      for (int h : arr_->half_edges(c))
+        if (labels_block_left_only(h)) return true;
+    return false;
   }
 
   // Per edge, from one pass over its labels: on which of its sides they put blocked space,
@@ -224,9 +233,10 @@ class SliceBuilder {
     for (size_t v = 0; v < vertices; ++v) {
       const std::span<const int> out = arr_->outgoing(int(v));
       if (out.empty()) continue;
-      bool all_blocked = true;
-      for (int h : out)
-        all_blocked = all_blocked && !realizable_[h / 2] && blocked_[arr_->face_of(h)];
+      // Most vertices fail at their first half-edge: stop there.
+      const bool all_blocked = std::all_of(out.begin(), out.end(), [&](int h) {
+        return !realizable_[h / 2] && blocked_[arr_->face_of(h)];
+      });
       if (!all_blocked || !sectors_explained_locally(int(v))) continue;
       if (blocked_at(arr_->vertices[v])) continue;
       std::vector<int> ids;

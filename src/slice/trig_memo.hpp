@@ -1,4 +1,4 @@
-// Remembered results of unit_vector and tan, keyed by the exact bits of their argument, so
+// Remembered results of unit_vector, tan and sin, keyed by the exact bits of their argument, so
 // an angle met again returns the very value computed the first time. Contact arcs bounded
 // by a fixed feature's normals start and end at the same angles slice after slice, and the
 // arrangement evaluates every contact arc again at its two ends: one sine and cosine each
@@ -16,7 +16,7 @@ namespace cslice {
 
 class TrigMemo {
  public:
-  TrigMemo() : units_(kSize, {0, {1.0, 0.0}}), tans_(kSize, {0, 0.0}) {}  // cos 0, sin 0, tan 0
+  TrigMemo() : units_(kSize, {0, {1.0, 0.0}}), tans_(kSize, {0, 0.0}), sins_(kSize, {0, 0.0}) {}
 
   // unit_vector(angle), bit for bit.
   Vec2 unit_vector(double angle) {
@@ -30,6 +30,14 @@ class TrigMemo {
     const uint64_t key = std::bit_cast<uint64_t>(x);
     TanEntry& e = tans_[slot(key)];
     if (e.key != key) e = {key, std::tan(x)};
+    return e.value;
+  }
+  // std::sin(x), bit for bit: an arc edge's area term takes the sine of its sweep, and a
+  // contact arc cut nowhere keeps its sweep from slice to slice.
+  double sin(double x) {
+    const uint64_t key = std::bit_cast<uint64_t>(x);
+    TanEntry& e = sins_[slot(key)];
+    if (e.key != key) e = {key, std::sin(x)};
     return e.value;
   }
 
@@ -48,6 +56,7 @@ class TrigMemo {
   };
   std::vector<UnitEntry> units_;
   std::vector<TanEntry> tans_;
+  std::vector<TanEntry> sins_;  // the same layout: a key and one value
 };
 
 }  // namespace cslice
