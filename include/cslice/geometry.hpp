@@ -108,8 +108,17 @@ struct Box {
     add(b.lo);
     add(b.hi);
   }
-  Box inflated(double margin) const;
-  bool overlaps(const Box& b) const;
+  // Inline: both run in the innermost loops of the sweeps and the placement test.
+  Box inflated(double margin) const {
+    if (empty()) return *this;
+    Box b;
+    b.lo = {lo.x - margin, lo.y - margin};
+    b.hi = {hi.x + margin, hi.y + margin};
+    return b;
+  }
+  bool overlaps(const Box& b) const {
+    return !(b.lo.x > hi.x || b.hi.x < lo.x || b.lo.y > hi.y || b.hi.y < lo.y);
+  }
   double diagonal() const { return empty() ? 0.0 : distance(lo, hi); }
 };
 

@@ -5,18 +5,6 @@
 
 namespace cslice {
 
-Box Box::inflated(double margin) const {
-  if (empty()) return *this;
-  Box b;
-  b.lo = {lo.x - margin, lo.y - margin};
-  b.hi = {hi.x + margin, hi.y + margin};
-  return b;
-}
-
-bool Box::overlaps(const Box& b) const {
-  return !(b.lo.x > hi.x || b.hi.x < lo.x || b.lo.y > hi.y || b.hi.y < lo.y);
-}
-
 double wrap_angle(double a) {
   a = fmod_two_pi(a + kPi);
   if (a < 0.0) a += kTwoPi;

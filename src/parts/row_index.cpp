@@ -26,11 +26,6 @@ RowIndex::RowIndex(std::span<const Curve> curves) : curves_(curves.begin(), curv
   seen_.assign(curves_.size(), 0);
 }
 
-size_t RowIndex::row_of(double y) const {
-  const double r = std::floor((y - y0_) / height_);
-  return size_t(std::clamp(r, 0.0, double(rows_.size() - 1)));
-}
-
 // Only curves whose box reaches p's height can toggle the parity (their chords and circular
 // segments lie inside their boxes), and those are all in p's row.
 bool RowIndex::encloses(Vec2 p) const {

@@ -3,6 +3,8 @@
 // whose boxes meet a box. Answers are exactly those of the plain loops over all curves.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <span>
 #include <vector>
 
@@ -35,7 +37,11 @@ class RowIndex {
   }
 
  private:
-  size_t row_of(double y) const;
+  // Inline: called for both ends of every box and point looked up.
+  size_t row_of(double y) const {
+    const double r = std::floor((y - y0_) / height_);
+    return size_t(std::clamp(r, 0.0, double(rows_.size() - 1)));
+  }
 
   std::vector<Curve> curves_;
   std::vector<Box> boxes_;
