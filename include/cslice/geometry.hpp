@@ -166,6 +166,28 @@ Curve make_segment(Vec2 from, Vec2 to);
 Curve make_bulge_arc(Vec2 from, Vec2 to, double bulge);
 // Arc of the circle (center, radius) from start_angle, turning by sweep (signed, |sweep| <= 2pi).
 Curve make_arc(Vec2 center, double radius, double start_angle, double sweep);
+// The sines, cosines and tangents the curve functions take, as the standard functions give
+// them. A cache returning the very same values (the slice's TrigMemo) can stand in for it in
+// make_arc_using and signed_area_contribution_using.
+struct PlainTrig {
+  Vec2 unit_vector(double angle) const { return cslice::unit_vector(angle); }
+  double tan(double x) const { return std::tan(x); }
+  double sin(double x) const { return std::sin(x); }
+};
+// make_arc with its trigonometry from `trig` (make_arc is make_arc_using(PlainTrig{}, ...)).
+template <class TrigSource>
+Curve make_arc_using(TrigSource& trig, Vec2 center, double radius, double start_angle,
+                     double sweep) {
+  Curve c;
+  c.center = center;
+  c.radius = radius;
+  c.start_angle = start_angle;
+  c.sweep = std::clamp(sweep, -kTwoPi, kTwoPi);
+  c.from = center + radius * trig.unit_vector(start_angle);
+  c.to = c.is_full_circle() ? c.from : center + radius * trig.unit_vector(start_angle + c.sweep);
+  c.bulge = c.is_full_circle() ? std::numeric_limits<double>::infinity() : trig.tan(c.sweep / 4.0);
+  return c;
+}
 // Full circle traversed counterclockwise (sweep = 2pi) or clockwise, starting at angle 0.
 Curve make_circle(Vec2 center, double radius, bool counterclockwise = true);
 
@@ -197,10 +219,29 @@ inline Box bounding_box(const Curve& c) {
 // Signed area between the curve and the origin: summing over a closed loop gives the area
 // it encloses (positive for counterclockwise loops).
 double signed_area_contribution(const Curve& c);
+// The same, with the sine of an arc's sweep from `trig` (see PlainTrig).
+template <class TrigSource>
+double signed_area_contribution_using(TrigSource& trig, const Curve& c) {
+  double a = 0.5 * cross(c.from, c.to);
+  if (c.is_arc()) a += 0.5 * c.radius * c.radius * (c.sweep - trig.sin(c.sweep));
+  return a;
+}
 
+// How far angle `a` lies from the arc's start_angle in its sweep direction, in [0, 2pi].
+inline double arc_turn(const Curve& arc, double a) {
+  return arc.sweep > 0.0 ? ccw_turn(arc.start_angle, a) : ccw_turn(a, arc.start_angle);
+}
 // Parameter t of angle `a` on an arc, measured from start_angle in the sweep direction and
-// divided by |sweep|; values outside [0, 1] mean the angle is off the arc.
-double arc_parameter_of_angle(const Curve& arc, double a);
+// divided by |sweep|; values outside [0, 1] mean the angle is off the arc. Inline: every
+// meeting point on an arc and every arc box come here.
+inline double arc_parameter_of_angle(const Curve& arc, double a) {
+  const double span = std::fabs(arc.sweep);
+  double delta = arc_turn(arc, a);
+  // Off the arc, report the angle beyond whichever end is nearer, so that callers can
+  // accept points a tolerance outside either end.
+  if (delta > span && delta - span > kTwoPi - delta) delta -= kTwoPi;
+  return delta / span;
+}
 // Parameter of the point of the curve nearest to p (clamped to [0, 1]).
 double closest_parameter(const Curve& c, Vec2 p);
 

@@ -138,17 +138,7 @@ class ContactBuilder {
   // make_arc, its sines, cosines and tangent taken from the memo when there is one.
   Curve arc(Vec2 center, double radius, double start_angle, double sweep) const {
     if (!trig_) return make_arc(center, radius, start_angle, sweep);
-    Curve c;
-    c.center = center;
-    c.radius = radius;
-    c.start_angle = start_angle;
-    c.sweep = std::clamp(sweep, -kTwoPi, kTwoPi);
-    c.from = center + radius * trig_->unit_vector(start_angle);
-    c.to =
-        c.is_full_circle() ? c.from : center + radius * trig_->unit_vector(start_angle + c.sweep);
-    c.bulge =
-        c.is_full_circle() ? std::numeric_limits<double>::infinity() : trig_->tan(c.sweep / 4.0);
-    return c;
+    return make_arc_using(*trig_, center, radius, start_angle, sweep);
   }
 
   // A moving disc feature on a fixed segment: the segment shifted by rho_m n_f - R c_m.

@@ -88,7 +88,6 @@ class TrigRootList {
   void push_back(double theta) {
     if (count_ < kMaxTrigRoots) roots_[count_++] = theta;
   }
-  void pop_back() { --count_; }
   void resize(size_t n) { count_ = int(n); }
   size_t size() const { return size_t(count_); }
   bool empty() const { return count_ == 0; }

@@ -39,15 +39,8 @@ Curve make_bulge_arc(Vec2 from, Vec2 to, double bulge) {
 }
 
 Curve make_arc(Vec2 center, double radius, double start_angle, double sweep) {
-  Curve c;
-  c.center = center;
-  c.radius = radius;
-  c.start_angle = start_angle;
-  c.sweep = std::clamp(sweep, -kTwoPi, kTwoPi);
-  c.from = center + radius * unit_vector(start_angle);
-  c.to = c.is_full_circle() ? c.from : center + radius * unit_vector(start_angle + c.sweep);
-  c.bulge = c.is_full_circle() ? std::numeric_limits<double>::infinity() : std::tan(c.sweep / 4.0);
-  return c;
+  PlainTrig trig;
+  return make_arc_using(trig, center, radius, start_angle, sweep);
 }
 
 Curve make_circle(Vec2 center, double radius, bool counterclockwise) {
@@ -90,17 +83,6 @@ double curve_length(const Curve& c) {
   return c.is_segment() ? distance(c.from, c.to) : c.radius * std::fabs(c.sweep);
 }
 
-double arc_parameter_of_angle(const Curve& arc, double a) {
-  const double span = std::fabs(arc.sweep);
-  double delta = arc.sweep > 0.0 ? a - arc.start_angle : arc.start_angle - a;
-  delta = fmod_two_pi(delta);
-  if (delta < 0.0) delta += kTwoPi;
-  // Off the arc, report the angle beyond whichever end is nearer, so that callers can
-  // accept points a tolerance outside either end.
-  if (delta > span && delta - span > kTwoPi - delta) delta -= kTwoPi;
-  return delta / span;
-}
-
 namespace {
 
 // The angles of the four axis directions and their unit vectors, computed once.
@@ -122,9 +104,7 @@ const std::array<AxisDirection, 4>& axis_directions() {
 // doubles rounds above 1 whenever the numerator is the larger), and delta = 2pi becomes
 // 0 / span when moved back a turn. Any other delta beyond span ends outside [0, 1].
 bool arc_passes(const Curve& c, double span, double a) {
-  double delta = c.sweep > 0.0 ? a - c.start_angle : c.start_angle - a;
-  delta = fmod_two_pi(delta);
-  if (delta < 0.0) delta += kTwoPi;
+  const double delta = arc_turn(c, a);
   return delta <= span || delta == kTwoPi;
 }
 
@@ -152,9 +132,8 @@ Box arc_bounding_box(const Curve& c) {
 // Chord term plus the circular segment between chord and arc: r^2 (sweep - sin sweep) / 2,
 // signed by the sweep, so a loop's sum is its enclosed area without polygonising arcs.
 double signed_area_contribution(const Curve& c) {
-  double a = 0.5 * cross(c.from, c.to);
-  if (c.is_arc()) a += 0.5 * c.radius * c.radius * (c.sweep - std::sin(c.sweep));
-  return a;
+  PlainTrig trig;
+  return signed_area_contribution_using(trig, c);
 }
 
 double closest_parameter(const Curve& c, Vec2 p) {

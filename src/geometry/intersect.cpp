@@ -104,16 +104,8 @@ void add_endpoint_touches(Intersection& r, const Curve& a, const Curve& b, bool 
 // Parameter on an arc for a point known to lie on its circle, or NaN when it is more than
 // eps (in length) beyond either end.
 double arc_parameter_within(const Curve& arc, Vec2 p, double eps) {
-  const double a = std::atan2(p.y - arc.center.y, p.x - arc.center.x);
-  // arc_parameter_of_angle(arc, a) and curve_length(arc), spelled out (the same expressions):
-  // every meeting point on an arc comes here.
-  const double span = std::fabs(arc.sweep);
-  double delta = arc.sweep > 0.0 ? a - arc.start_angle : arc.start_angle - a;
-  delta = fmod_two_pi(delta);
-  if (delta < 0.0) delta += kTwoPi;
-  if (delta > span && delta - span > kTwoPi - delta) delta -= kTwoPi;
-  const double t = delta / span;
-  const double length = arc.radius * span;
+  const double t = arc_parameter_of_angle(arc, std::atan2(p.y - arc.center.y, p.x - arc.center.x));
+  const double length = arc.radius * std::fabs(arc.sweep);  // curve_length(arc)
   const double slack = length > 0.0 ? eps / length : 0.0;
   if (t < -slack || t > 1.0 + slack) return std::numeric_limits<double>::quiet_NaN();
   return std::clamp(t, 0.0, 1.0);

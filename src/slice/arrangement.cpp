@@ -16,7 +16,6 @@
 #include <numeric>
 
 #include "parts/loop_queries.hpp"
-#include "slice/arrangement_steps.hpp"
 #include "slice/close_points.hpp"
 #include "slice/small_sort.hpp"
 #include "slice/split_points.hpp"
@@ -475,7 +474,9 @@ double segment_angle(std::vector<Scratch::AngleMemo>& memo, int curve, bool forw
 // every later step reads the order cyclically (next around a face, sectors between
 // neighbours), so those are left in half-edge order without computing their angles.
 void order_outgoing(Arrangement& arr, Scratch& s, double eps, double angular_eps) {
-  group_by_origin(arr, s.fill);
+  group_by(
+      2 * arr.edges.size(), arr.vertices.size(), [&](size_t h) { return arr.origin(int(h)); },
+      arr.outgoing_start, arr.outgoing_edges, s.fill);
   std::vector<Direction>& dirs = s.dirs;  // by half-edge, those at vertices of degree >= 3
   dirs.resize(2 * arr.edges.size());
   const size_t vertices = arr.vertices.size();  // read once: the stores below could alias it
@@ -544,13 +545,10 @@ void vertex_components(const Arrangement& arr, Scratch& s) {
   for (size_t v = 0; v < s.comp.size(); ++v) s.comp[v] = s.uf.find(int(v));
 }
 
-// signed_area_contribution(c), the same expression, with the sine of an arc's sweep from
-// `trig` when given (an arc cut nowhere keeps its sweep from slice to slice).
+// signed_area_contribution(c), with the sine of an arc's sweep from `trig` when given (an arc
+// cut nowhere keeps its sweep from slice to slice).
 double area_term(const Curve& c, TrigMemo* trig) {
-  double a = 0.5 * cross(c.from, c.to);
-  if (c.is_arc())
-    a += 0.5 * c.radius * c.radius * (c.sweep - (trig ? trig->sin(c.sweep) : std::sin(c.sweep)));
-  return a;
+  return trig ? signed_area_contribution_using(*trig, c) : signed_area_contribution(c);
 }
 
 void trace_cycles(Arrangement& arr, Scratch& s, TrigMemo* trig) {

@@ -135,15 +135,13 @@ struct Arrangement {
     const ArrangementEdge& e = edges[h / 2];
     return h % 2 == 0 ? e.tangent_u : -e.tangent_v;
   }
-  // Whether h's face (its left side) is on the blocked side of label l of h's edge.
-  static bool left_is_blocked(int h, const EdgeLabel& l) { return (h % 2 == 0) == l.blocked_left; }
 };
+
+class TrigMemo;  // slice/trig_memo.hpp
 
 // Builds arrangements one after another in the same buffers (its own and the arrangement's):
 // a slice of a small pair makes a few dozen edges, and allocating every working array per
 // slice cost more than the geometry. Not thread-safe: one per thread.
-class TrigMemo;  // slice/trig_memo.hpp
-
 class ArrangementBuilder {
  public:
   ArrangementBuilder();

@@ -21,6 +21,12 @@
 namespace cslice {
 namespace {
 
+// Sorted, each id once.
+void sort_unique(std::vector<int>& ids) {
+  small_sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+}
+
 // One half-edge leaving a vertex, as sectors_explained_locally sees it.
 struct SectorSide {
   Vec2 dir;
@@ -179,8 +185,7 @@ class SliceBuilder {
   std::vector<int> label_ids(int e) const {
     std::vector<int> ids;
     for (const EdgeLabel& l : arr_->edges[e].labels) ids.push_back(l.segment);
-    small_sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    sort_unique(ids);
     return ids;
   }
 
@@ -242,8 +247,7 @@ class SliceBuilder {
       std::vector<int> ids;
       for (int h : out)
         for (const EdgeLabel& l : arr_->edges[h / 2].labels) ids.push_back(l.segment);
-      small_sort(ids.begin(), ids.end());
-      ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+      sort_unique(ids);
       add_degenerate_point(arr_->vertices[v], std::move(ids));
     }
   }
@@ -252,8 +256,7 @@ class SliceBuilder {
     for (DegenerateContact& d : slice_.degenerate) {
       if (d.is_point && distance(d.curve.from, p) <= pair_.tol.geometric) {
         d.segments.insert(d.segments.end(), ids.begin(), ids.end());
-        std::sort(d.segments.begin(), d.segments.end());
-        d.segments.erase(std::unique(d.segments.begin(), d.segments.end()), d.segments.end());
+        sort_unique(d.segments);
         return;
       }
     }
@@ -332,8 +335,7 @@ class SliceBuilder {
         if (realizable_[h / 2])
           for (const EdgeLabel& l : arr_->edges[h / 2].labels) ids.push_back(l.segment);
       if (ids.empty()) continue;
-      small_sort(ids.begin(), ids.end());
-      ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+      sort_unique(ids);
       for (int id : ids) is_node[id] = true;
       add_meetings(ids, arr_->vertices[v]);
     }
@@ -367,8 +369,7 @@ std::vector<int> realizable_segments(const Slice& slice) {
   for (const ContactPiece& p : slice.realizable) ids.push_back(p.segment);
   for (const DegenerateContact& d : slice.degenerate)
     ids.insert(ids.end(), d.segments.begin(), d.segments.end());
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  sort_unique(ids);
   return ids;
 }
 

@@ -197,11 +197,7 @@ void split_points(const std::vector<Curve>& curves, double eps, SplitScratch& s,
   for (size_t i = 0; i < curves.size(); ++i) {
     splits.push_back({int(i), 0.0, curves[i].from});
     splits.push_back({int(i), 1.0, curves[i].to});
-    Box& box = s.boxes.emplace_back(bounding_box(curves[i]));  // inflated(eps), inline
-    if (!box.empty()) {
-      box.lo = {box.lo.x - eps, box.lo.y - eps};
-      box.hi = {box.hi.x + eps, box.hi.y + eps};
-    }
+    s.boxes.push_back(bounding_box(curves[i]).inflated(eps));
   }
   candidate_pairs(s);
   for (auto [i, j] : s.pairs) {
