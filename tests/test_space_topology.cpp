@@ -86,7 +86,7 @@ void expect_well_formed(const Pair& pair, const SlicedSpace& space, const std::s
         << name << ": cell " << cell.id << " sample (" << cell.sample.x << ", " << cell.sample.y
         << ", " << cell.sample_theta << ") is " << to_string(p) << ", area up to " << cell.max_area;
   }
-  // Each interval's representative is in the middle: the cells' samples are there.
+  // The cells' samples are taken in their interval's representative slice.
   for (const SpaceSlice& s : space.slices) {
     if (s.kind != SliceKind::interval) continue;
     for (const SpaceCell& cell : t.cells) {

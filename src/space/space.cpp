@@ -28,13 +28,15 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 // Slices in the open interval from critical orientation `a` to `b` (b > a), `step` apart at
-// most. An even number of sub-intervals puts one slice exactly in the middle: the interval's
-// representative, furthest from both critical ends.
+// most: the fewest equal parts that keep that promise, and at least two so the interval has a
+// slice. The representative is the inner point nearest the middle (exactly the middle for an
+// even count): any inner slice represents the interval, and one slice per interval saved is
+// worth more than perfect centring.
 void plan_interval(double a, double b, double step, int interval, std::vector<Planned>& out) {
   const double length = b - a;
-  const int m = 2 * std::max(1, static_cast<int>(std::ceil(length / (2.0 * step))));
+  const int m = std::max(2, static_cast<int>(std::ceil(length / step)));
   for (int k = 1; k < m; ++k) {
-    const SliceKind kind = 2 * k == m ? SliceKind::interval : SliceKind::intermediate;
+    const SliceKind kind = k == m / 2 ? SliceKind::interval : SliceKind::intermediate;
     out.push_back({wrap_angle(a + length * k / m), kind, interval});
   }
 }

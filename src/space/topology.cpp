@@ -14,6 +14,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <utility>
 
 #include "cslice/equivalence.hpp"
 #include "cslice/space.hpp"
@@ -317,9 +318,12 @@ class TopologyBuilder {
       std::vector<int> order;  // chain positions: the representative first
       const double middle = (ends_[i] - starts_[i]) / 2;
       for (int j = 0; j < static_cast<int>(chains_[i].size()); ++j) order.push_back(j);
-      std::stable_sort(order.begin(), order.end(), [&](int x, int y) {
-        return std::abs(offset(i, x) - middle) < std::abs(offset(i, y) - middle);
-      });
+      // The representative first even where another slice is as near the middle (odd counts).
+      const auto key = [&](int j) {
+        return std::pair(chains_[i][j].stored != representative_[i],
+                         std::abs(offset(i, j) - middle));
+      };
+      std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return key(x) < key(y); });
       std::vector<Link> links;  // the chain, nearest the middle first, then refinements
       for (int j : order) links.push_back(chains_[i][j]);
       links.insert(links.end(), refined_links_[i].begin(), refined_links_[i].end());
