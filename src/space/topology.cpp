@@ -26,9 +26,9 @@ namespace cslice {
 namespace {
 
 constexpr size_t kMaxProblems = 20;  // problems kept in words; the counts keep the rest
-// Halvings of a gap between two slices of an interval whose components the samples do not
-// match: 4 shrinks the gap 16 times (the paper examples need at most 1); beyond that the
-// boundary labels decide (match_by_labels).
+// Halvings of a gap between two slices of an interval whose components neither the samples
+// nor distinct boundary labels match: 4 shrinks the gap 16 times (the paper examples need
+// none, their labels decide).
 constexpr int kMaxRefinement = 4;
 
 // Angle from `start` forward to `theta`, in [0, 2 pi).
@@ -223,9 +223,10 @@ class TopologyBuilder {
   // Matches the components of two consecutive slices of one interval: each one's sample
   // located in the other slice, both ways, must give one bijection, and matched components
   // must have the same boundary labels. A component may move further than its own width
-  // between stored slices (the cam's 0.2-wide channel turns by ~0.1 per step), so when the
-  // samples do not match, the gap is halved with an extra slice, up to kMaxRefinement times;
-  // only a gap still unmatched after that is a failure.
+  // between stored slices (the cam's 0.2-wide channel turns by ~0.1 per step); then distinct
+  // boundary labels decide (the slices are equivalent), and only where they cannot is the gap
+  // halved with an extra slice, up to kMaxRefinement times; a gap still unmatched after that
+  // is a failure.
   void match(int interval, const Link& a, const Link& b, int depth = 0) {
     const Slice &sa = *a.slice, &sb = *b.slice;
     const int na = component_count(sa), nb = component_count(sb);
@@ -235,13 +236,13 @@ class TopologyBuilder {
     bool ok = na == nb;
     for (int c = 0; c < na && ok; ++c) ok = forward[c] >= 0 && backward[forward[c]] == c;
     for (int c = 0; c < nb && ok; ++c) ok = backward[c] >= 0 && forward[backward[c]] == c;
+    if (!ok && match_by_labels(a, b, forward, backward)) return;
     if (!ok && depth < kMaxRefinement) {
       const Link mid = refine(interval, a, b);
       match(interval, a, mid, depth + 1);
       match(interval, mid, b, depth + 1);
       return;
     }
-    if (!ok && match_by_labels(a, b, forward, backward)) return;
     // Unmatched after refinement: keep what the samples say, and report it.
     for (int c = 0; c < na; ++c)
       if (forward[c] >= 0) nodes_.unite(a.first_node + c, b.first_node + forward[c]);
@@ -267,8 +268,8 @@ class TopologyBuilder {
     }
   }
 
-  // The last resort for components too small for their samples to be found in the
-  // neighbouring slice however close (a sliver shrinking towards a critical orientation):
+  // For components whose samples are not found in the neighbouring slice (a narrow slot
+  // that moves further than its width, a sliver shrinking towards a critical orientation):
   // the slices are equivalent, so when every component's boundary labels are distinct
   // within each slice, equal labels give the one bijection. It must agree with every pair
   // the samples did match both ways.
