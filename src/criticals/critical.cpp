@@ -117,6 +117,26 @@ struct Context {
   std::vector<std::vector<BinEntry>> kept_entries;
 };
 
+// A configuration cell of screening: configurations in one cell get one placement test.
+using ProbeKey = std::array<long long, 3>;
+using ProbeAnswers = std::vector<std::pair<ProbeKey, bool>>;  // sorted by key, blocked or not
+
+ProbeKey probe_key(const Pair& pair, Vec2 x, double theta) {
+  const double cell = pair.tol.criticality;
+  return {std::llround(theta / pair.tol.critical_angle), std::llround(x.x / cell),
+          std::llround(x.y / cell)};
+}
+
+bool key_before(const std::pair<ProbeKey, bool>& entry, const ProbeKey& key) {
+  return entry.first < key;
+}
+
+std::optional<bool> find_answer(const ProbeAnswers& answers, const ProbeKey& key) {
+  auto it = std::lower_bound(answers.begin(), answers.end(), key, key_before);
+  if (it != answers.end() && it->first == key) return it->second;
+  return std::nullopt;
+}
+
 // Solves and validates (pass 2) and probes blocked space (pass 3); one per thread.
 class Worker {
  public:
@@ -154,7 +174,8 @@ class Worker {
   // order, so that the answers do not depend on the thread count.
   // The bin's entries are built only when a piece needs cutting: most candidates are
   // settled by their cheap probes, or have no overlapping segments.
-  void start_bin(int bin) {
+  void start_bin(int bin, const ProbeAnswers& tested) {
+    tested_ = &tested;
     cache_.clear();
     bin_ = bin;
     entries_.reset();
@@ -286,14 +307,14 @@ class Worker {
 
   // blocked(), remembered per configuration cell within a bin (several probes coincide:
   // the ends of adjoining segments, one switch seen by several families).
+  // The point criticalities' own tests (screen's first step) answer too: a switch's probe
+  // often lands on the endpoint criticality of its family and a neighbour. They are
+  // complete before any probe runs, so the answers do not depend on the order either.
   bool blocked_cached(Vec2 x, double theta) {
-    const double cell = ctx_.pair.tol.criticality;
-    const ProbeKey key{std::llround(theta / ctx_.pair.tol.critical_angle), std::llround(x.x / cell),
-                       std::llround(x.y / cell)};
+    const ProbeKey key = probe_key(ctx_.pair, x, theta);
+    if (const std::optional<bool> known = find_answer(*tested_, key)) return *known;
     // A sorted vector: a bin's probes are few, and a map would allocate per entry.
-    auto it =
-        std::lower_bound(cache_.begin(), cache_.end(), key,
-                         [](const auto& entry, const ProbeKey& k) { return entry.first < k; });
+    auto it = std::lower_bound(cache_.begin(), cache_.end(), key, key_before);
     if (it != cache_.end() && it->first == key) return it->second;
     const bool b = blocked(x, theta);
     cache_.insert(it, {key, b});
@@ -380,11 +401,11 @@ class Worker {
   unsigned memo_now_ = 0;
   std::uint64_t memo_theta_ = 0;
   bool memo_used_ = false;
-  std::vector<double> near_;  // roots()
-  std::vector<Vec2> probes_;  // the probes of one candidate (reaches_free)
-  std::vector<double> cuts_;  // add_piece_probes()
-  using ProbeKey = std::array<long long, 3>;
-  std::vector<std::pair<ProbeKey, bool>> cache_;  // sorted by key
+  std::vector<double> near_;              // roots()
+  std::vector<Vec2> probes_;              // the probes of one candidate (reaches_free)
+  std::vector<double> cuts_;              // add_piece_probes()
+  ProbeAnswers cache_;                    // sorted by key
+  const ProbeAnswers* tested_ = nullptr;  // the point criticalities' answers
   int bin_ = 0;
   std::optional<std::vector<BinEntry>> entries_;  // of bin_, when built
 };
@@ -477,14 +498,10 @@ class CriticalFinder {
     // Point criticalities: each distinct configuration cell tested once, by the first
     // candidate in it (several equations find one event: an end of a on b and of b on a, a
     // vertex with both its edges).
-    const double cell = ctx_.pair.tol.criticality, turn = ctx_.pair.tol.critical_angle;
-    using Key = std::array<long long, 3>;
-    std::vector<std::pair<Key, size_t>> keys;
+    std::vector<std::pair<ProbeKey, size_t>> keys;
     for (size_t i = 0; i < found.size(); ++i)
       if (found[i].condition != CriticalCondition::segment_end)
-        keys.push_back({{std::llround(found[i].theta / turn), std::llround(found[i].at.x / cell),
-                         std::llround(found[i].at.y / cell)},
-                        i});
+        keys.push_back({probe_key(ctx_.pair, found[i].at, found[i].theta), i});
     std::sort(keys.begin(), keys.end());
     std::vector<size_t> firsts;  // indices into keys where a new key starts
     for (size_t k = 0; k < keys.size(); ++k)
@@ -494,6 +511,8 @@ class CriticalFinder {
       const Candidate& c = found[keys[firsts[g]].second];
       blocked[g] = workers_.local()->blocked(c.at, c.theta);
     });
+    ProbeAnswers tested(firsts.size());  // sorted, as the keys are
+    for (size_t g = 0; g < firsts.size(); ++g) tested[g] = {keys[firsts[g]].first, blocked[g] != 0};
     // Blocked candidates that may still reach free space, and every segment end, are
     // probed along their contact segments, grouped by bin (the probes cut by the bin's
     // families).
@@ -513,7 +532,7 @@ class CriticalFinder {
     tbb::parallel_for(0, ctx_.binning.count, [&](int b) {
       if (probe[b].empty()) return;
       Worker& w = *workers_.local();
-      w.start_bin(b);
+      w.start_bin(b, tested);
       for (size_t i : probe[b]) keep[i] = w.reaches_free(found[i]);
     });
     return keep;
