@@ -36,6 +36,23 @@ double gap_after(const SlicedSpace& space, size_t i) {
   return next - space.slices[i].theta;
 }
 
+// No interval has more slices than keeping them max_step apart needs: an interval of
+// length L gets ceil(L / max_step) - 1 inner slices, and at least one (its representative).
+void expect_fewest_slices(const SlicedSpace& space, const std::string& name) {
+  const auto& criticals = space.criticals.orientations;
+  if (criticals.empty()) return;
+  std::map<int, int> inner;  // per interval, its non-critical slices
+  for (const SpaceSlice& s : space.slices)
+    if (s.kind != SliceKind::critical) inner[s.interval] += 1;
+  const int n = static_cast<int>(criticals.size());
+  for (int i = 0; i < n; ++i) {
+    const double end = i + 1 < n ? criticals[i + 1].theta : criticals[0].theta + kTwoPi;
+    const double length = end - criticals[i].theta;
+    const int parts = std::max(2, static_cast<int>(std::ceil(length / space.max_step)));
+    EXPECT_EQ(inner[i], parts - 1) << name << ": interval " << i << " of length " << length;
+  }
+}
+
 // The structural promises every computed space keeps.
 void expect_well_formed(const SlicedSpace& space, const std::string& name) {
   const size_t criticals = space.criticals.orientations.size();
@@ -53,6 +70,7 @@ void expect_well_formed(const SlicedSpace& space, const std::string& name) {
     EXPECT_GT(gap_after(space, i), 0.0) << name << ": slices " << i << " out of order";
     EXPECT_LE(gap_after(space, i), space.max_step + kAngleSlack) << name << " after slice " << i;
   }
+  expect_fewest_slices(space, name);
 }
 
 // The correspondence is the set algebra of the two slices' labels.

@@ -187,6 +187,11 @@ TEST(SpaceTopology, FastenerInsideAndOutsideMeetThroughTheSlot) {
   const SlicedSpace space = space_of(pair);
   expect_clean_checks(space.topology, "fastener");
   expect_well_formed(pair, space, "fastener");
+  // The slot moves further than its width between stored slices; its boundary labels are
+  // distinct, so they match the slices without halving the gaps (16 extra slices when the
+  // halving came first).
+  EXPECT_GT(space.topology.checks.label_matches, 0);
+  EXPECT_EQ(space.topology.checks.refinement_slices, 0);
   for (const SpaceSlice& s : space.slices) {
     const size_t n = s.slice.free_components.size();
     EXPECT_TRUE(n == 1 || n == 2) << s.theta;
