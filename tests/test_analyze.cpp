@@ -144,10 +144,14 @@ TEST_F(SpaceFile, TruncatedJsonIsAClearError) {
 
 TEST_F(SpaceFile, WrongFormatOrVersionIsRejected) {
   expect_mentions(tampered_error("cam", [](auto& j) { j["version"] = kSpaceFormatVersion + 1; }),
-                  "bad.json: field \"version\": version 3 is newer than this cslice reads (2)");
+                  "bad.json: field \"version\": version 4 is newer than this cslice reads (3)");
   expect_mentions(tampered_error("cam", [](auto& j) { j["version"] = 1; }),
                   "field \"version\": version 1 files do not embed their pair");
-  expect_mentions(tampered_error("cam", [](auto& j) { j["version"] = "2"; }),
+  expect_mentions(tampered_error("cam", [](auto& j) { j["version"] = 2; }),
+                  "field \"version\": version 2 files place their slices by an earlier plan");
+  expect_mentions(tampered_error("cam", [](auto& j) { j["version"] = 0; }),
+                  "field \"version\": version 0 is not a space file version");
+  expect_mentions(tampered_error("cam", [](auto& j) { j["version"] = "3"; }),
                   "field \"version\": must be an integer, got string");
   expect_mentions(tampered_error("cam", [](auto& j) { j["format"] = "cslice-slice"; }),
                   "field \"format\": expected \"cslice-space\", got \"cslice-slice\"");

@@ -263,8 +263,9 @@ class JsonMutator {
       const char* formats[] = {"cslice-slice", "CSLICE-SPACE", "cslice-space ", ""};
       *it = formats[pick(4)];
     } else if (it.key() == "version") {
-      const ojson versions[] = {1, 3, -2, 2.0, "2", kSpaceFormatVersion + (std::int64_t{1} << 32)};
-      *it = versions[pick(6)];
+      const ojson versions[] = {
+          1, 2, 4, -2, 3.0, "3", kSpaceFormatVersion + (std::int64_t{1} << 32)};
+      *it = versions[pick(7)];
     } else if (it->is_array() && pick(2) == 0) {
       resize(*it);  // more or fewer slices, critical orientations, ... than the pair gives
     } else {

@@ -209,7 +209,7 @@ std::vector<SegmentLabel> realizable_labels(const Slice& slice);
 std::vector<SegmentLabel> boundary_labels(const Slice& slice, const FreeComponent& component);
 
 // The version of the space file format that space_to_json writes and load_space reads.
-inline constexpr int kSpaceFormatVersion = 2;
+inline constexpr int kSpaceFormatVersion = 3;
 
 // The space as JSON text (format "cslice-space", version kSpaceFormatVersion;
 // docs/space-format.md), ending in a newline. It embeds the pair (pair_file_text) so the file

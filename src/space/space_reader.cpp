@@ -145,10 +145,18 @@ void check_format(const json& top) {
   if (format != "cslice-space")
     fail_field("format", "expected \"cslice-space\", got \"" + format + "\"");
   const long long version = integer_field(top, "", "version");
+  // Version 1 files lack their pair; version 2 files slice each interval an even number of
+  // times (before 2026-11-25), which the recomputed plan no longer matches.
+  if (version == 1)
+    fail_field("version",
+               "version 1 files do not embed their pair and cannot be read back; "
+               "recompute the space with `cslice compute`");
+  if (version == 2)
+    fail_field("version",
+               "version 2 files place their slices by an earlier plan and cannot be read "
+               "back; recompute the space with `cslice compute`");
   if (version < kSpaceFormatVersion)
-    fail_field("version", "version " + std::to_string(version) +
-                              " files do not embed their pair and cannot be read back; "
-                              "recompute the space with `cslice compute`");
+    fail_field("version", "version " + std::to_string(version) + " is not a space file version");
   if (version > kSpaceFormatVersion)
     fail_field("version", "version " + std::to_string(version) +
                               " is newer than this cslice reads (" +
