@@ -325,7 +325,7 @@ class TopologyBuilder {
                          std::abs(offset(i, j) - middle));
       };
       std::stable_sort(order.begin(), order.end(), [&](int x, int y) { return key(x) < key(y); });
-      std::vector<Link> links;  // the chain, nearest the middle first, then refinements
+      std::vector<Link> links;  // the chain in that order, then refinements
       for (int j : order) links.push_back(chains_[i][j]);
       links.insert(links.end(), refined_links_[i].begin(), refined_links_[i].end());
       std::vector<int> root_cell(nodes_.size(), -1);
