@@ -67,3 +67,12 @@ TEST(CriticalCompleteness, TenLargerRandomCurvedPairs) {
   std::printf("10 larger pairs: %d orientations, %d extraneous, %d near-critical, %lld slices\n",
               total.orientations, total.extraneous, total.near_critical, total.slices);
 }
+
+// A stress run's pair where one group's criticalities spread over 2.6e-8 rad: a sample just
+// before the group's middle but after its first criticality (a segment appearing) differed
+// from its interval's representative. The interval runs between the groups' spans.
+TEST(CriticalCompleteness, SamplesInsideAGroupsSpanBelongToItsOrientation) {
+  std::mt19937 rng(100223);
+  const testkit::RandomPair p = testkit::random_pair(rng, 8, 9, false);
+  expect_complete(p.pair, "stress pair 100223");
+}

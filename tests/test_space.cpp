@@ -8,11 +8,13 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <sstream>
 
 #include "cslice/space.hpp"
 #include "support/cli_run.hpp"
 #include "support/examples.hpp"
+#include "support/random_parts.hpp"
 
 using namespace cslice;
 
@@ -53,6 +55,35 @@ void expect_fewest_slices(const SlicedSpace& space, const std::string& name) {
   }
 }
 
+// A critical orientation covers its group's span, from its first criticality to its last
+// (docs/criticals.md, grouping): every other slice lies strictly between two spans, in the
+// open interval the topology gives it.
+void expect_slices_between_spans(const SlicedSpace& space, const std::string& name) {
+  const auto& criticals = space.criticals.orientations;
+  const int n = static_cast<int>(criticals.size());
+  if (n == 0) return;
+  std::vector<std::pair<double, double>> spans;  // unwrapped around each orientation's theta
+  for (const CriticalOrientation& o : criticals) {
+    double first = o.theta, last = o.theta;
+    for (const Criticality& k : o.criticalities) {
+      first = std::min(first, o.theta + wrap_angle(k.theta - o.theta));
+      last = std::max(last, o.theta + wrap_angle(k.theta - o.theta));
+    }
+    spans.push_back({first, last});
+  }
+  for (const SpaceSlice& s : space.slices) {
+    if (s.kind == SliceKind::critical) continue;
+    const int i = s.interval;
+    const double after = wrap_angle(s.theta - spans[i].second);
+    const double next_first = i + 1 < n ? spans[i + 1].first : spans[0].first + kTwoPi;
+    const double before = wrap_angle(next_first - s.theta);
+    EXPECT_GT(after, 0.0) << name << ": slice at " << s.theta << " inside the span of orientation "
+                          << i;
+    EXPECT_GT(before, 0.0) << name << ": slice at " << s.theta
+                           << " inside the span of the orientation after interval " << i;
+  }
+}
+
 // The structural promises every computed space keeps.
 void expect_well_formed(const SlicedSpace& space, const std::string& name) {
   const size_t criticals = space.criticals.orientations.size();
@@ -71,6 +102,7 @@ void expect_well_formed(const SlicedSpace& space, const std::string& name) {
     EXPECT_LE(gap_after(space, i), space.max_step + kAngleSlack) << name << " after slice " << i;
   }
   expect_fewest_slices(space, name);
+  expect_slices_between_spans(space, name);
 }
 
 // The correspondence is the set algebra of the two slices' labels.
@@ -152,6 +184,19 @@ TEST(Space, PaperExamplesAreWellFormed) {
     EXPECT_GT(space.reach, 0.0) << name;
     EXPECT_GE(space.seconds_criticals, 0.0);
     EXPECT_GE(space.seconds_slices, 0.0);
+  }
+}
+
+// Random curved pairs (the stress seeds of tests/test_critical_completeness.cpp's span case
+// among them: groups there spread over 10^-8 rad) keep the same promises.
+TEST(Space, RandomCurvedPairsAreWellFormed) {
+  for (unsigned seed = 100220; seed < 100236; ++seed) {
+    std::mt19937 rng(seed);
+    const testkit::RandomPair p =
+        testkit::random_pair(rng, 3 + int(seed % 6), 4 + int(seed / 7 % 8), seed % 3 == 0);
+    const SlicedSpace space = compute_space(p.pair, with_threads(2));
+    expect_well_formed(space, "random pair " + std::to_string(seed));
+    expect_correspondence_consistent(space);
   }
 }
 

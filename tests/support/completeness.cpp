@@ -20,6 +20,9 @@ struct Checker {
   const std::vector<Pair>& finer;        // the pair with finer and finer geometric epsilons
   const Pair* fine = nullptr;            // the pair with a finer geometric epsilon
   const std::vector<double>& criticals;  // sorted, in [-pi, pi)
+  // Per critical orientation, the first and last of its grouped criticalities, unwrapped
+  // around its theta (lo <= theta <= hi): the orientation covers that span.
+  const std::vector<std::pair<double, double>>& spans;
   const CompletenessOptions& options;
   CompletenessReport& report;
 
@@ -35,13 +38,13 @@ struct Checker {
     return compute_slice(*fine, theta);
   }
 
-  // Whether a reported critical orientation lies in [lo, hi] (hi - lo < 2 pi, lo may be
-  // below -pi), widened by the angular tolerance.
+  // Whether a reported critical orientation (the span of its group) meets [lo, hi]
+  // (hi - lo < 2 pi, lo may be below -pi), widened by the angular tolerance.
   bool critical_within(double lo, double hi) const {
     const double slack = pair.tol.angular;
-    for (double c : criticals)
+    for (const auto& [first, last] : spans)
       for (double shift : {-kTwoPi, 0.0, kTwoPi})
-        if (c + shift >= lo - slack && c + shift <= hi + slack) return true;
+        if (last + shift >= lo - slack && first + shift <= hi + slack) return true;
     return false;
   }
 
@@ -96,8 +99,9 @@ struct Checker {
     report.intervals = int(std::max<size_t>(n, 1));
     std::vector<Slice> representatives;
     for (size_t i = 0; i < std::max<size_t>(n, 1); ++i) {
-      const double lo = n ? criticals[i] : -kPi;
-      const double hi = n ? (i + 1 < n ? criticals[i + 1] : criticals[0] + kTwoPi) : kPi;
+      // Between the groups: a slice inside a group's span is that critical orientation's.
+      const double lo = n ? spans[i].second : -kPi;
+      const double hi = n ? (i + 1 < n ? spans[i + 1].first : spans[0].first + kTwoPi) : kPi;
       const double mid = lo + (hi - lo) * 0.5;
       const int k = options.samples_per_interval;
       const Slice rep = slice(mid);
@@ -152,12 +156,26 @@ CompletenessReport check_completeness(const Pair& pair, const CriticalSet& set,
                                       const CompletenessOptions& options) {
   CompletenessReport report;
   std::vector<double> criticals;
-  for (const CriticalOrientation& o : set.orientations) criticals.push_back(o.theta);
+  std::vector<std::pair<double, double>> spans;
+  for (const CriticalOrientation& o : set.orientations) {
+    criticals.push_back(o.theta);
+    // The span is trusted only as the grouping rule makes it: a chain of criticalities
+    // each within the critical angle of the next.
+    std::vector<double> at{o.theta};
+    for (const Criticality& k : o.criticalities)
+      at.push_back(o.theta + wrap_angle(k.theta - o.theta));
+    std::sort(at.begin(), at.end());
+    for (size_t k = 1; k < at.size(); ++k)
+      if (at[k] - at[k - 1] > pair.tol.critical_angle)
+        report.interval_failures.push_back(
+            describe(o.theta, "a gap in its group wider than the critical angle"));
+    spans.push_back({at.front(), at.back()});
+  }
   report.orientations = int(criticals.size());
   std::vector<Pair> finer(2, pair);
   finer[0].tol.geometric /= options.epsilon_shrink;
   finer[1].tol.geometric = finer[0].tol.geometric / options.epsilon_shrink;
-  Checker checker{pair, finer, nullptr, criticals, options, report};
+  Checker checker{pair, finer, nullptr, criticals, spans, options, report};
   checker.check_intervals();
   checker.check_dense();
   return report;

@@ -1,7 +1,9 @@
 // The promise of the critical orientations, checked by sampling: between two consecutive
 // critical orientations every slice is equivalent to the interval's representative, and
 // wherever dense samples across the circle change, a reported critical orientation lies in
-// the bracket where they change.
+// the bracket where they change. A critical orientation is a group of criticalities closer
+// than the critical angle and covers their span: an interval runs from the last
+// criticality of one group to the first of the next.
 #pragma once
 
 #include <string>
