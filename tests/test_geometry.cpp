@@ -173,6 +173,22 @@ TEST(ArcArc, TwoCrossings) {
   for (int i = 0; i < 2; ++i) EXPECT_NEAR(x.hits[i].point.x, 0.5, 1e-12);
 }
 
+// A unit circle and a nearly straight one (centre 10^4 away) through two of its points, in
+// both argument orders: the crossings land within 10^-11 of those points. Computed from the
+// far centre (r^2 - s^2 with r^2 = 10^8) they strayed by about 10^-9.
+TEST(ArcArc, NearlyStraightArcCrossesWhereItShould) {
+  const Vec2 p{std::cos(0.3), std::sin(0.3)}, q{std::cos(1.1), std::sin(1.1)};
+  const Vec2 mid = 0.5 * (p + q), away = perp_left((1.0 / distance(p, q)) * (q - p));
+  const Vec2 far = mid + 1e4 * away;
+  const Curve big = make_circle(far, distance(far, p));
+  const Curve unit = make_circle({0, 0}, 1);
+  for (const Intersection& x : {intersect(unit, big, kEps), intersect(big, unit, kEps)}) {
+    ASSERT_EQ(x.kind, IntersectionKind::two);
+    for (int i = 0; i < 2; ++i)
+      EXPECT_LT(std::min(distance(x.hits[i].point, p), distance(x.hits[i].point, q)), 1e-11);
+  }
+}
+
 TEST(ArcArc, ExternalAndInternalTangency) {
   const Intersection ext = intersect(make_circle({0, 0}, 1), make_circle({3, 0}, 2), kEps);
   ASSERT_EQ(ext.kind, IntersectionKind::tangent);
