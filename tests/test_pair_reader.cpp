@@ -353,13 +353,24 @@ TEST(PairReaderRejects, BulgeAbsurd) {
             "bulge 1e+12 exceeds the magnitude limit");
 }
 
+// The pair below has size 14.1 (the 10 by 10 fixed square's diagonal): bulge 1e-5 on the edge
+// of length sqrt(2) gives radius 35,355, over 1,000 times the size; bulge 1e-3 (radius 354)
+// is read. (A stress pair with an arc of radius 4,100 times its size lost its free space in a
+// slice, and flatter arcs missed critical orientations: include/cslice/tolerance.hpp.)
+TEST(PairReaderRejects, NearlyStraightArc) {
+  parse_bad(moving_loops(R"([[0,0],[1,0,1e-5],[0,1]])"), "moving", 0, 1,
+            "is nearly straight: radius 35355.33906 exceeds 1000 times");
+  EXPECT_TRUE(parse_pair(moving_loops(R"([[0,0],[1,0,1e-3],[0,1]])"), "t").ok());
+}
+
 TEST(PairReaderRejects, ArcFlatterThanTolerance) {
   parse_bad(moving_loops(R"([[0,0],[1,0,1e-12],[0,1]])"), "moving", 0, 1,
             "within the geometric tolerance of its chord");
 }
 
 TEST(PairReaderRejects, ArcCenterBeyondLimit) {
-  parse_bad(fixed_loops(R"([[0,0],[1000,0,1e-7],[1000,1000],[0,1000]])"), "fixed", 0, 1,
+  // Radius 2e9, 14 times the size: not nearly straight, but its centre is out of range.
+  parse_bad(fixed_loops(R"([[0,0],[1e8,0,0.0125],[1e8,1e8],[0,1e8]])"), "fixed", 0, 1,
             "exceeds the magnitude limit");
 }
 

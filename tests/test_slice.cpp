@@ -364,32 +364,6 @@ TEST(SliceOracle, CurvedStarsWithTinyReflexTurnsKeepTheirFreeSpace) {
   }
 }
 
-// A moving arc of bulge 6e-6 (radius 3e4, 4,000 times the pair's size; stress seed 101242):
-// its contact arc with a fixed vertex ends where a neighbouring vertex's contact arc starts.
-// The crossings of their circles, computed from the far centre, came back 2e-8 apart (more
-// than the geometric epsilon, 7.6e-9), the shared end split into a zero-area lens, and the
-// slice lost its unbounded free space.
-TEST(SliceOracle, NearlyStraightArcMeetsItsNeighbourAtOnePoint) {
-  std::mt19937 rng(101242);
-  const testkit::RandomPair rp = testkit::random_pair(rng, 7, 11, false);
-  const double theta = 1.764742275855681;
-  const Curve* arc = nullptr;
-  const Curve* neighbour = nullptr;
-  const std::vector<ContactSegment> segments = contact_segments(rp.pair, theta);
-  for (const ContactSegment& c : segments) {
-    if (c.moving_feature == 11 && c.fixed_feature == 12) arc = &c.curve;
-    if (c.moving_feature == 12 && c.fixed_feature == 13) neighbour = &c.curve;
-  }
-  ASSERT_TRUE(arc && neighbour);
-  EXPECT_GT(arc->radius, 1e3 * rp.pair.tol.size);
-  EXPECT_EQ(intersect(*arc, *neighbour, rp.pair.tol.geometric).count, 1);
-  const Slice s = compute_slice(rp.pair, theta);
-  ASSERT_EQ(s.free_components.size(), 1u);
-  EXPECT_FALSE(s.free_components[0].bounded);
-  std::mt19937 points(7);
-  EXPECT_GT(check_against_classify(rp.pair, theta, 300, points, "seed 101242"), 100);
-}
-
 // A Slicer keeps its working buffers from one slice to the next; no slice may depend on the
 // ones before it. Slices of different sizes in turn (a pair's orientations, then another
 // pair's) must each match a fresh compute_slice, field for field.

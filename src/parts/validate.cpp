@@ -77,6 +77,14 @@ std::optional<InputError> check_raw_edge(const RawPart& part, int li, int i,
                     "arc with bulge " + format_number(vs[i].bulge) +
                         " lies within the geometric tolerance of its chord; use bulge 0 for a "
                         "straight edge");
+  const double bulge = std::fabs(vs[i].bulge);
+  const double radius = bulge != 0.0 ? chord * (1.0 + bulge * bulge) / (4.0 * bulge) : 0.0;
+  if (radius > kMaxArcRadiusPerSize * tol.size)
+    return error_at(part, li, i,
+                    "arc with bulge " + format_number(vs[i].bulge) +
+                        " is nearly straight: radius " + format_number(radius) + " exceeds " +
+                        format_number(kMaxArcRadiusPerSize) + " times the pair's size " +
+                        format_number(tol.size) + "; use bulge 0 for a straight edge");
   return std::nullopt;
 }
 
