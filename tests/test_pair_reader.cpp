@@ -354,12 +354,12 @@ TEST(PairReaderRejects, BulgeAbsurd) {
 }
 
 // The pair below has size 14.1 (the 10 by 10 fixed square's diagonal): bulge 1e-5 on the edge
-// of length sqrt(2) gives radius 35,355, over 1,000 times the size; bulge 1e-3 (radius 354)
+// of length sqrt(2) gives radius 35,355, over 100 times the size; bulge 1e-3 (radius 354)
 // is read. (A stress pair with an arc of radius 4,100 times its size lost its free space in a
-// slice, and flatter arcs missed critical orientations: include/cslice/tolerance.hpp.)
+// slice; arcs over 300 times missed critical orientations: include/cslice/tolerance.hpp.)
 TEST(PairReaderRejects, NearlyStraightArc) {
   parse_bad(moving_loops(R"([[0,0],[1,0,1e-5],[0,1]])"), "moving", 0, 1,
-            "is nearly straight: radius 35355.33906 exceeds 1000 times");
+            "is nearly straight: radius 35355.33906 exceeds 100 times");
   EXPECT_TRUE(parse_pair(moving_loops(R"([[0,0],[1,0,1e-3],[0,1]])"), "t").ok());
 }
 
