@@ -5,7 +5,9 @@
 // (reported, no change) are allowed and counted.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
+#include <sstream>
 
 #include "support/completeness.hpp"
 #include "support/examples.hpp"
@@ -75,4 +77,54 @@ TEST(CriticalCompleteness, SamplesInsideAGroupsSpanBelongToItsOrientation) {
   std::mt19937 rng(100223);
   const testkit::RandomPair p = testkit::random_pair(rng, 8, 9, false);
   expect_complete(p.pair, "stress pair 100223");
+}
+
+namespace {
+
+// A regular k-gon of circumradius r about the origin, first vertex at angle `phase`, as a
+// pair-file loop.
+std::string regular_loop(int k, double r, double phase = 0.0, double dx = 0.0, double dy = 0.0) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "[";
+  for (int i = 0; i < k; ++i) {
+    const double a = phase + kTwoPi * i / k;
+    out << (i ? "," : "") << "[" << dx + r * std::cos(a) << "," << dy + r * std::sin(a) << "]";
+  }
+  out << "]";
+  return out.str();
+}
+
+Pair designed_pair(const std::string& name, const std::string& moving, const std::string& hole) {
+  const std::string json = R"({"name":")" + name + R"(","moving":{"loops":[)" + moving +
+                           R"(]},"fixed":{"loops":[[[-6,-6],[6,-6],[6,6],[-6,6]],)" + hole + "]}}";
+  LoadResult r = parse_pair(json, name);
+  if (!r.ok()) throw std::runtime_error(name + ": " + r.error->message());
+  return std::move(*r.pair);
+}
+
+}  // namespace
+
+// Designed, degenerate fits (from a stress run over 82 such pairs, all complete): contact at
+// every orientation, tangency to every side at once, clearances of 1e-3 and 1e-4, identical
+// polygons, a peg in a slot of its own width.
+TEST(CriticalCompleteness, DesignedFits) {
+  const double hexagon_inradius_one = 1.0 / std::cos(kPi / 6);
+  const std::string rounded_peg =
+      "[[-0.2,-1.5,0],[0.2,-1.5,0.41421356237309503],[0.5,-1.2,0],[0.5,1.2,0.41421356237309503],"
+      "[0.2,1.5,0],[-0.2,1.5,0.41421356237309503],[-0.5,1.2,0],[-0.5,-1.2,0.41421356237309503]]";
+  const Pair pairs[] = {
+      designed_pair("triangle in a disc through its vertices", regular_loop(3, 1.0),
+                    R"({"circle":[0,0,1]})"),
+      designed_pair("disc touching every side of a hexagon", R"({"circle":[0,0,1]})",
+                    regular_loop(6, hexagon_inradius_one)),
+      designed_pair("square, clearance 1e-3", regular_loop(4, 1.0), regular_loop(4, 1.001)),
+      designed_pair("octagon in an octagon turned half a tooth, 1e-4", regular_loop(8, 1.0),
+                    regular_loop(8, 1.0001, kPi / 8)),
+      designed_pair("pentagon in its own shape, origin off centre",
+                    regular_loop(5, 1.0, 0.0, 0.1, 0.05), regular_loop(5, 1.0)),
+      designed_pair("rounded peg in a slot of its width", rounded_peg,
+                    "[[-0.5,-4],[0.5,-4],[0.5,4],[-0.5,4]]"),
+  };
+  for (const Pair& pair : pairs) expect_complete(pair, pair.name);
 }
