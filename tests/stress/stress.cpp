@@ -1,0 +1,169 @@
+// cslice_stress: a bug hunt over many pairs, beyond what the test suite can afford to run.
+//
+//   cslice_stress --seeds FIRST LAST    random curved pairs FIRST..LAST-1 (testkit::random_pair)
+//   cslice_stress PAIR.json ...         pair files (designed fits, imported parts)
+//
+// Each pair goes through the checks the tests make on a few: the completeness of its
+// critical orientations (tests/support/completeness.hpp), its slices at random orientations
+// against `classify`, and point queries on its computed space against `classify` outside the
+// contact tolerance band. A failing pair is printed (its file, or its JSON for a seed) and
+// the exit status is 1. Not run by ctest: a few hundred pairs take minutes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "cslice/classify.hpp"
+#include "cslice/query.hpp"
+#include "cslice/space.hpp"
+#include "support/completeness.hpp"
+#include "support/random_parts.hpp"
+
+using namespace cslice;
+
+namespace {
+
+std::vector<std::string> g_files;
+unsigned g_first = 0, g_last = 0;
+
+// Membership in a free component against classify at random points around the pair.
+void check_slice(const Pair& pair, double theta, std::mt19937& rng, const std::string& name) {
+  const Slice slice = compute_slice(pair, theta);
+  PlacementTester tester(pair);
+  for (const FreeComponent& c : slice.free_components)
+    EXPECT_NE(tester.classify({c.sample.x, c.sample.y, theta}), Placement::blocked)
+        << name << " theta " << theta << ": sample of component " << c.id;
+  const double reach = std::max(std::fabs(pair.moving.box.lo.x), std::fabs(pair.moving.box.hi.x)) +
+                       std::max(std::fabs(pair.moving.box.lo.y), std::fabs(pair.moving.box.hi.y));
+  const Box box = pair.fixed.box.inflated(reach);
+  std::uniform_real_distribution<double> ux(box.lo.x, box.hi.x), uy(box.lo.y, box.hi.y);
+  for (int i = 0; i < 200; ++i) {
+    const Vec2 p{ux(rng), uy(rng)};
+    const Placement truth = tester.classify({p.x, p.y, theta});
+    if (truth == Placement::contact) continue;
+    EXPECT_EQ(slice.locate(p) >= 0, truth == Placement::free)
+        << name << " theta " << theta << " point (" << p.x << ", " << p.y << ")";
+  }
+}
+
+bool deep_blocked(PlacementTester& tester, const Pose& pose, double d) {
+  for (int k = 0; k < 8; ++k) {
+    const Vec2 u = unit_vector(k * kPi / 4);
+    if (!tester.blocked({pose.x + d * u.x, pose.y + d * u.y, pose.theta})) return false;
+  }
+  return true;
+}
+
+bool near_realizable(const Pair& pair, const Pose& pose, double d) {
+  const Slice slice = compute_slice(pair, pose.theta);
+  for (const ContactPiece& p : slice.realizable)
+    if (distance_to_curve(p.curve, {pose.x, pose.y}) <= d) return true;
+  return false;
+}
+
+// Queries anywhere and near realizable contact, as tests/test_query.cpp makes them.
+void check_queries(const Pair& pair, unsigned seed, const std::string& name) {
+  SpaceOptions options;
+  options.threads = 1;
+  const SlicedSpace space = compute_space(pair, options);
+  SpaceQuery q(pair, space);
+  PlacementTester tester(pair);
+  std::mt19937 rng(seed);
+  Box box;
+  std::vector<std::pair<double, const Curve*>> pieces;
+  for (const SpaceSlice& s : space.slices) {
+    for (const ContactSegment& c : s.slice.contact_segments) box.add(bounding_box(c.curve));
+    for (const ContactPiece& p : s.slice.realizable) pieces.push_back({s.theta, &p.curve});
+  }
+  box = box.inflated(0.1 * box.diagonal());
+  std::uniform_real_distribution<double> ux(box.lo.x, box.hi.x), uy(box.lo.y, box.hi.y),
+      ut(-kPi, kPi), unit(-1.0, 1.0), ut01(0.0, 1.0);
+  std::uniform_int_distribution<size_t> upiece(0, pieces.empty() ? 0 : pieces.size() - 1);
+  const double band = 2.0 * pair.tol.contact;
+  for (int i = 0; i < 600; ++i) {
+    Pose pose{ux(rng), uy(rng), ut(rng)};
+    if (i % 2 == 1 && !pieces.empty()) {
+      const auto& [theta, curve] = pieces[upiece(rng)];
+      const Vec2 p = point_at(*curve, ut01(rng));
+      const double r = pair.tol.size * std::pow(10.0, -1.3 - 2.0 * ut01(rng));
+      pose = {p.x + r * unit(rng), p.y + r * unit(rng), theta + space.max_step * unit(rng)};
+    }
+    const QueryAnswer a = q.query(pose);
+    const Placement truth = tester.classify(pose);
+    if (truth == Placement::contact) continue;
+    if (truth == Placement::free && tester.boundary_distance(pose) <= band) continue;
+    if (truth == Placement::blocked && !deep_blocked(tester, pose, band)) continue;
+    if (truth == Placement::blocked && a.placement == Placement::contact &&
+        near_realizable(pair, pose, 0.75 * band))
+      continue;
+    EXPECT_EQ(a.placement, truth) << name << " at (" << pose.x << ", " << pose.y << ", "
+                                  << pose.theta << ")";
+  }
+}
+
+// Returns whether the pair passed every check.
+bool check_pair(const Pair& pair, unsigned seed, const std::string& name) {
+  const int before =
+      ::testing::UnitTest::GetInstance()->current_test_info()->result()->total_part_count();
+  const CriticalSet set = critical_orientations(pair);
+  const testkit::CompletenessReport report = testkit::check_completeness(pair, set);
+  for (const std::string& f : report.interval_failures) ADD_FAILURE() << name << ": " << f;
+  for (const std::string& m : report.missed) ADD_FAILURE() << name << ": " << m;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> angle(-kPi, kPi);
+  for (int k = 0; k < 3; ++k) check_slice(pair, angle(rng), rng, name);
+  check_queries(pair, seed, name);
+  return ::testing::UnitTest::GetInstance()->current_test_info()->result()->total_part_count() ==
+         before;
+}
+
+TEST(Stress, Pairs) {
+  int checked = 0, failed = 0;
+  for (unsigned seed = g_first; seed < g_last; ++seed) {
+    std::mt19937 rng(seed);
+    const testkit::RandomPair p =
+        testkit::random_pair(rng, 3 + int(seed % 6), 4 + int(seed / 7 % 8), seed % 3 == 0);
+    ++checked;
+    if (!check_pair(p.pair, seed, "seed " + std::to_string(seed))) {
+      ++failed;
+      std::cout << "FAILED seed " << seed << ": " << p.json << "\n";
+    }
+  }
+  for (const std::string& file : g_files) {
+    LoadResult r = load_pair(file);
+    if (!r.ok()) {
+      std::cout << "skipped " << r.error->message() << "\n";
+      continue;
+    }
+    ++checked;
+    if (!check_pair(*r.pair, 1, file)) {
+      ++failed;
+      std::cout << "FAILED " << file << "\n";
+    }
+  }
+  std::cout << checked << " pairs checked, " << failed << " failed\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ::testing::InitGoogleTest(&argc, argv);
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--seeds" && i + 2 < argc) {
+      g_first = unsigned(std::stoul(argv[i + 1]));
+      g_last = unsigned(std::stoul(argv[i + 2]));
+      i += 2;
+    } else {
+      g_files.push_back(arg);
+    }
+  }
+  if (g_files.empty() && g_first >= g_last) {
+    std::cerr << "usage: cslice_stress --seeds FIRST LAST | PAIR.json ...\n";
+    return 2;
+  }
+  return RUN_ALL_TESTS();
+}
