@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 #include "cslice/classify.hpp"
+#include "cslice/critical.hpp"
 #include "cslice/slice.hpp"
 #include "cslice/slice_io.hpp"
 #include "slice/close_points.hpp"
@@ -361,6 +362,29 @@ TEST(SliceOracle, CurvedStarsWithTinyReflexTurnsKeepTheirFreeSpace) {
     std::mt19937 points(seed);
     EXPECT_GT(check_against_classify(*r.pair, 0.7, 100, points, what, seed == 2026u), 30) << what;
     if (HasFailure()) return;
+  }
+}
+
+// Two contact arcs shorter than eps in a row, both shrinking away at a critical orientation:
+// dropped, they left their neighbours' ends 1.4e-8 apart (eps 9.7e-9) and the slice there had
+// no free component at all. Stress seeds (tests/stress) 100283 and 100289, at the critical
+// orientations critical_orientations finds near these angles.
+TEST(SliceOracle, ShortArcsInARowKeepTheBoundaryClosed) {
+  for (auto [seed, near] : {std::pair{100283u, -2.3438159928}, std::pair{100289u, 0.2873553446}}) {
+    std::mt19937 rng(seed);
+    const testkit::RandomPair rp = testkit::random_pair(rng, 8, seed == 100283u ? 10 : 11, false);
+    const CriticalSet set = critical_orientations(rp.pair);
+    double theta = near + 1.0;
+    for (const CriticalOrientation& o : set.orientations)
+      if (std::fabs(o.theta - near) < std::fabs(theta - near)) theta = o.theta;
+    ASSERT_LT(std::fabs(theta - near), 1e-9) << seed;
+    const Slice s = compute_slice(rp.pair, theta);
+    int unbounded = 0;
+    for (const FreeComponent& c : s.free_components) unbounded += c.bounded ? 0 : 1;
+    EXPECT_EQ(unbounded, 1) << seed;
+    std::mt19937 points(seed);
+    EXPECT_GT(check_against_classify(rp.pair, theta, 500, points, "seed " + std::to_string(seed)),
+              200);
   }
 }
 

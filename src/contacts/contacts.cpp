@@ -176,13 +176,15 @@ class ContactBuilder {
           emit(m, f, contact_kind(m, f), make_segment(c, c), true);
         continue;
       }
-      // An arc no longer than the geometric epsilon is one point, which the ends of the
-      // contact segments beside it hold. Whether it is one point is a question of length,
-      // as for every vertex of the arrangement, not of angle: at a critical orientation a
-      // sliver of normals narrower than the angular epsilon still makes an arc of a large
-      // radius (a nearly straight feature, or a concave and a convex arc of nearly equal
-      // radii apart) longer than eps, and dropping it would leave a gap in contact space.
-      if (std::fabs(rho) * parts[i].span <= eps) continue;
+      // An arc shorter than the geometric epsilon is kept: the arrangement merges its ends
+      // into one vertex, but they also join the contact segments beside it. Two such arcs in
+      // a row (a moving arc passing a fixed vertex onto a fixed arc, at the critical
+      // orientation where both shrink away) can span more than eps together, and with them
+      // dropped their neighbours' ends stayed 1.4e-8 apart, leaving a gap through which the
+      // unbounded face leaked into blocked space (stress seeds 100283 and 100289). Likewise a
+      // sliver of normals narrower than the angular epsilon makes an arc of a large radius
+      // longer than eps. Only an empty set of normals makes no arc.
+      if (!(parts[i].span > 0.0)) continue;
       if (rho > 0.0) {
         emit(m, f, contact_kind(m, f), arc(c, rho, parts[i].lo, parts[i].span));
       } else {
