@@ -4,19 +4,23 @@
 //   cslice_stress PAIR.json ...         pair files (designed fits, imported parts)
 //
 // Each pair goes through the checks the tests make on a few: the completeness of its
-// critical orientations (tests/support/completeness.hpp), its slices at random orientations
-// against `classify`, and point queries on its computed space against `classify` outside the
-// contact tolerance band. A failing pair is printed (its file, or its JSON for a seed) and
-// the exit status is 1. Not run by ctest: a few hundred pairs take minutes.
+// critical orientations (tests/support/completeness.hpp), its slices at random and at critical
+// orientations against `classify`, point queries on its computed space against `classify`
+// outside the contact tolerance band, and its contact mesh closed (every edge shared by two
+// triangles once each way, nothing coned or joined straight). A failing pair is printed (its file,
+// or its JSON for a seed) and the exit status is 1. Not run by ctest: a few hundred pairs take
+// minutes.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "cslice/classify.hpp"
+#include "cslice/mesh.hpp"
 #include "cslice/query.hpp"
 #include "cslice/space.hpp"
 #include "support/completeness.hpp"
@@ -30,7 +34,8 @@ std::vector<std::string> g_files;
 unsigned g_first = 0, g_last = 0;
 
 // Membership in a free component against classify at random points around the pair.
-void check_slice(const Pair& pair, double theta, std::mt19937& rng, const std::string& name) {
+void check_slice(const Pair& pair, double theta, std::mt19937& rng, const std::string& name,
+                 int points = 200) {
   const Slice slice = compute_slice(pair, theta);
   PlacementTester tester(pair);
   for (const FreeComponent& c : slice.free_components)
@@ -40,7 +45,7 @@ void check_slice(const Pair& pair, double theta, std::mt19937& rng, const std::s
                        std::max(std::fabs(pair.moving.box.lo.y), std::fabs(pair.moving.box.hi.y));
   const Box box = pair.fixed.box.inflated(reach);
   std::uniform_real_distribution<double> ux(box.lo.x, box.hi.x), uy(box.lo.y, box.hi.y);
-  for (int i = 0; i < 200; ++i) {
+  for (int i = 0; i < points; ++i) {
     const Vec2 p{ux(rng), uy(rng)};
     const Placement truth = tester.classify({p.x, p.y, theta});
     if (truth == Placement::contact) continue;
@@ -64,11 +69,31 @@ bool near_realizable(const Pair& pair, const Pose& pose, double d) {
   return false;
 }
 
+// Closed and consistently oriented once the seam at theta = pi is identified, as
+// tests/test_mesh.cpp requires of its cases.
+void check_mesh(const Pair& pair, const SlicedSpace& space, const std::string& name) {
+  const ContactMesh m = contact_mesh(pair, space);
+  std::vector<int> id(m.vertices.size());
+  for (size_t v = 0; v < id.size(); ++v) id[v] = static_cast<int>(v);
+  for (auto [at_pi, at_minus_pi] : m.seam) id[at_pi] = at_minus_pi;
+  std::map<std::pair<int, int>, std::pair<int, int>> uses;  // per undirected edge: each way
+  for (const auto& t : m.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = id[t[k]], b = id[t[(k + 1) % 3]];
+      auto& u = uses[std::minmax(a, b)];
+      (a < b ? u.first : u.second) += 1;
+    }
+  int bad_edges = 0;
+  for (const auto& [edge, n] : uses) bad_edges += n.first == 1 && n.second == 1 ? 0 : 1;
+  EXPECT_EQ(bad_edges, 0) << name << ": mesh edges not shared by two triangles once each way";
+  EXPECT_EQ(m.stats.coned_cycles + m.stats.straight_joins + m.stats.unanchored_cycles, 0)
+      << name << ": mesh cycles coned " << m.stats.coned_cycles << ", joined straight "
+      << m.stats.straight_joins << ", unanchored " << m.stats.unanchored_cycles;
+}
+
 // Queries anywhere and near realizable contact, as tests/test_query.cpp makes them.
-void check_queries(const Pair& pair, unsigned seed, const std::string& name) {
-  SpaceOptions options;
-  options.threads = 1;
-  const SlicedSpace space = compute_space(pair, options);
+void check_queries(const Pair& pair, const SlicedSpace& space, unsigned seed,
+                   const std::string& name) {
   SpaceQuery q(pair, space);
   PlacementTester tester(pair);
   std::mt19937 rng(seed);
@@ -115,7 +140,14 @@ bool check_pair(const Pair& pair, unsigned seed, const std::string& name) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> angle(-kPi, kPi);
   for (int k = 0; k < 3; ++k) check_slice(pair, angle(rng), rng, name);
-  check_queries(pair, seed, name);
+  // At most 40 critical orientations, evenly spread: the slices most likely to go wrong.
+  const size_t n = set.orientations.size(), step = std::max<size_t>(1, n / 40);
+  for (size_t i = 0; i < n; i += step) check_slice(pair, set.orientations[i].theta, rng, name, 40);
+  SpaceOptions options;
+  options.threads = 1;
+  const SlicedSpace space = compute_space(pair, options);
+  check_queries(pair, space, seed, name);
+  check_mesh(pair, space, name);
   return ::testing::UnitTest::GetInstance()->current_test_info()->result()->total_part_count() ==
          before;
 }
