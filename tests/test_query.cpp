@@ -13,101 +13,32 @@
 
 #include "cslice/classify.hpp"
 #include "cslice/space.hpp"
+#include "support/band.hpp"
 #include "support/cli_run.hpp"
 #include "support/examples.hpp"
 #include "support/random_parts.hpp"
 #include "support/spaces.hpp"
 
 using namespace cslice;
+using testkit::deep_blocked;
+using testkit::near_realizable;
+using testkit::query_box;
 using testkit::space_of;
 
 namespace {
 
-// Where configurations are drawn: every contact curve of the stored slices, with a margin.
-Box query_box(const SlicedSpace& space) {
-  Box box;
-  for (const SpaceSlice& s : space.slices)
-    for (const ContactSegment& c : s.slice.contact_segments) box.add(bounding_box(c.curve));
-  const double margin = 0.1 * box.diagonal();
-  return box.inflated(margin);
-}
-
-bool deep_blocked(PlacementTester& tester, const Pose& pose, double d) {
-  for (int k = 0; k < 8; ++k) {
-    const Vec2 u = unit_vector(k * kPi / 4);
-    if (!tester.blocked({pose.x + d * u.x, pose.y + d * u.y, pose.theta})) return false;
-  }
-  return true;
-}
-
-// Whether a realizable piece of the slice at the pose's theta passes within `d` of it: the
-// eight probes of deep_blocked miss the tip of a free wedge narrower than their spacing
-// (stress seeds 100050, 100158, 100206: blocked in all eight directions, yet 0.0078 from the
-// tip of a thin pocket, with a contact tolerance of 0.0086).
-bool near_realizable(const Pair& pair, const Pose& pose, double d) {
-  const Slice slice = compute_slice(pair, pose.theta);
-  return std::any_of(slice.realizable.begin(), slice.realizable.end(), [&](const ContactPiece& p) {
-    return distance_to_curve(p.curve, {pose.x, pose.y}) <= d;
-  });
-}
-
 void expect_agrees_with_classify(const Pair& pair, const SlicedSpace& space, int queries,
                                  unsigned seed, const std::string& name) {
   SpaceQuery q(pair, space);
-  PlacementTester tester(pair);
-  std::mt19937 rng(seed);
-  const Box box = query_box(space);
-  std::uniform_real_distribution<double> ux(box.lo.x, box.hi.x), uy(box.lo.y, box.hi.y),
-      ut(-kPi, kPi);
-  int checked = 0, free_count = 0, blocked_count = 0, mismatches = 0;
-  // Half the queries anywhere in the box, half near realizable contact of a stored slice (a
-  // random point of a random piece, moved by up to 0.05% to 5% of the pair's size, theta moved by
-  // up to a slice step), where free and blocked space meet.
-  std::vector<std::pair<double, const Curve*>> pieces;
-  for (const SpaceSlice& s : space.slices)
-    for (const ContactPiece& p : s.slice.realizable) pieces.push_back({s.theta, &p.curve});
-  std::uniform_real_distribution<double> unit(-1.0, 1.0), ut01(0.0, 1.0);
-  std::uniform_int_distribution<size_t> upiece(0, pieces.empty() ? 0 : pieces.size() - 1);
-  for (int i = 0; i < queries; ++i) {
-    Pose pose{ux(rng), uy(rng), ut(rng)};
-    if (i % 2 == 1 && !pieces.empty()) {
-      const auto& [theta, curve] = pieces[upiece(rng)];
-      const Vec2 p = point_at(*curve, ut01(rng));
-      const double r = pair.tol.size * std::pow(10.0, -1.3 - 2.0 * ut01(rng));
-      pose = {p.x + r * unit(rng), p.y + r * unit(rng), theta + space.max_step * unit(rng)};
-    }
-    const QueryAnswer a = q.query(pose);
-    // Outside the band by boundary distance: free. Overlapping boundaries are at distance 0,
-    // so blocked configurations are checked when they stay blocked translated 2 tol.contact
-    // in eight directions (deep enough in blocked space).
-    const Placement truth = tester.classify(pose);
-    if (truth == Placement::contact) continue;
-    if (truth == Placement::free && tester.boundary_distance(pose) <= 2.0 * pair.tol.contact)
-      continue;
-    if (truth == Placement::blocked && !deep_blocked(tester, pose, 2.0 * pair.tol.contact))
-      continue;
-    // A contact answer within the band of such a wedge is right.
-    if (truth == Placement::blocked && a.placement == Placement::contact &&
-        near_realizable(pair, pose, 1.5 * pair.tol.contact))
-      continue;
-    ++checked;
-    (truth == Placement::free ? free_count : blocked_count) += 1;
-    if (a.placement != truth && ++mismatches <= 10)
-      ADD_FAILURE() << name << ": at (" << pose.x << ", " << pose.y << ", " << pose.theta
-                    << ") query says " << to_string(a.placement) << ", classify "
-                    << to_string(truth);
-    if (a.placement == Placement::free) {
-      EXPECT_GE(a.component, 0) << name;
-      EXPECT_LT(a.component, static_cast<int>(space.topology.components.size())) << name;
-    }
-  }
-  EXPECT_EQ(mismatches, 0) << name;
-  EXPECT_GT(checked, queries / 8) << name;
+  const testkit::QueryAgreement r =
+      testkit::compare_queries_with_classify(pair, space, q, queries, seed, name);
+  EXPECT_EQ(r.mismatches, 0) << name;
+  EXPECT_GT(r.checked, queries / 8) << name;
   const QueryStats& st = q.stats();
-  std::cout << name << ": " << checked << " checked (" << free_count << " free, " << blocked_count
-            << " blocked); " << st.evaluated << " evaluated, " << st.fallback << " fallback, "
-            << st.at_stored_slice << " at critical slices; " << st.exact_intervals << "/"
-            << st.intervals << " intervals exact\n";
+  std::cout << name << ": " << r.checked << " checked (" << r.free_count << " free, "
+            << r.blocked_count << " blocked); " << st.evaluated << " evaluated, " << st.fallback
+            << " fallback, " << st.at_stored_slice << " at critical slices; " << st.exact_intervals
+            << "/" << st.intervals << " intervals exact\n";
 }
 
 // Points on realizable pieces of the stored non-critical slices are contact, by both.

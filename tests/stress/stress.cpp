@@ -23,6 +23,7 @@
 #include "cslice/mesh.hpp"
 #include "cslice/query.hpp"
 #include "cslice/space.hpp"
+#include "support/band.hpp"
 #include "support/completeness.hpp"
 #include "support/random_parts.hpp"
 
@@ -54,21 +55,6 @@ void check_slice(const Pair& pair, double theta, std::mt19937& rng, const std::s
   }
 }
 
-bool deep_blocked(PlacementTester& tester, const Pose& pose, double d) {
-  for (int k = 0; k < 8; ++k) {
-    const Vec2 u = unit_vector(k * kPi / 4);
-    if (!tester.blocked({pose.x + d * u.x, pose.y + d * u.y, pose.theta})) return false;
-  }
-  return true;
-}
-
-bool near_realizable(const Pair& pair, const Pose& pose, double d) {
-  const Slice slice = compute_slice(pair, pose.theta);
-  for (const ContactPiece& p : slice.realizable)
-    if (distance_to_curve(p.curve, {pose.x, pose.y}) <= d) return true;
-  return false;
-}
-
 // Closed and consistently oriented once the seam at theta = pi is identified, as
 // tests/test_mesh.cpp requires of its cases.
 void check_mesh(const Pair& pair, const SlicedSpace& space, const std::string& name) {
@@ -95,38 +81,7 @@ void check_mesh(const Pair& pair, const SlicedSpace& space, const std::string& n
 void check_queries(const Pair& pair, const SlicedSpace& space, unsigned seed,
                    const std::string& name) {
   SpaceQuery q(pair, space);
-  PlacementTester tester(pair);
-  std::mt19937 rng(seed);
-  Box box;
-  std::vector<std::pair<double, const Curve*>> pieces;
-  for (const SpaceSlice& s : space.slices) {
-    for (const ContactSegment& c : s.slice.contact_segments) box.add(bounding_box(c.curve));
-    for (const ContactPiece& p : s.slice.realizable) pieces.push_back({s.theta, &p.curve});
-  }
-  box = box.inflated(0.1 * box.diagonal());
-  std::uniform_real_distribution<double> ux(box.lo.x, box.hi.x), uy(box.lo.y, box.hi.y),
-      ut(-kPi, kPi), unit(-1.0, 1.0), ut01(0.0, 1.0);
-  std::uniform_int_distribution<size_t> upiece(0, pieces.empty() ? 0 : pieces.size() - 1);
-  const double band = 2.0 * pair.tol.contact;
-  for (int i = 0; i < 600; ++i) {
-    Pose pose{ux(rng), uy(rng), ut(rng)};
-    if (i % 2 == 1 && !pieces.empty()) {
-      const auto& [theta, curve] = pieces[upiece(rng)];
-      const Vec2 p = point_at(*curve, ut01(rng));
-      const double r = pair.tol.size * std::pow(10.0, -1.3 - 2.0 * ut01(rng));
-      pose = {p.x + r * unit(rng), p.y + r * unit(rng), theta + space.max_step * unit(rng)};
-    }
-    const QueryAnswer a = q.query(pose);
-    const Placement truth = tester.classify(pose);
-    if (truth == Placement::contact) continue;
-    if (truth == Placement::free && tester.boundary_distance(pose) <= band) continue;
-    if (truth == Placement::blocked && !deep_blocked(tester, pose, band)) continue;
-    if (truth == Placement::blocked && a.placement == Placement::contact &&
-        near_realizable(pair, pose, 0.75 * band))
-      continue;
-    EXPECT_EQ(a.placement, truth) << name << " at (" << pose.x << ", " << pose.y << ", "
-                                  << pose.theta << ")";
-  }
+  testkit::compare_queries_with_classify(pair, space, q, 600, seed, name);
 }
 
 // Returns whether the pair passed every check.
