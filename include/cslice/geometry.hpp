@@ -164,6 +164,8 @@ struct Curve {
 Curve make_segment(Vec2 from, Vec2 to);
 // Arc from `from` to `to` with the given bulge; a zero bulge gives a segment.
 Curve make_bulge_arc(Vec2 from, Vec2 to, double bulge);
+// The radius of the arc of that bulge (nonzero) over a chord of length `chord`.
+double bulge_radius(double chord, double bulge);
 // Arc of the circle (center, radius) from start_angle, turning by sweep (signed, |sweep| <= 2pi).
 Curve make_arc(Vec2 center, double radius, double start_angle, double sweep);
 // The sines, cosines and tangents the curve functions take, as the standard functions give

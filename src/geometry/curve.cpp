@@ -21,6 +21,10 @@ Curve make_segment(Vec2 from, Vec2 to) {
 // The bulge gives the centre without trigonometry: with b = tan(sweep/4), the centre lies
 // at distance d(1 - b^2)/(4b) to the left of the chord's midpoint (negative: to the right)
 // and the radius is d(1 + b^2)/(4|b|), d the chord length.
+double bulge_radius(double chord, double bulge) {
+  return chord * (1.0 + bulge * bulge) / (4.0 * std::fabs(bulge));
+}
+
 Curve make_bulge_arc(Vec2 from, Vec2 to, double bulge) {
   if (bulge == 0.0) return make_segment(from, to);
   Curve c;
@@ -32,7 +36,7 @@ Curve make_bulge_arc(Vec2 from, Vec2 to, double bulge) {
   const double b2 = bulge * bulge;
   const double offset = d * (1.0 - b2) / (4.0 * bulge);
   c.center = lerp(from, to, 0.5) + offset * perp_left(normalized(chord));
-  c.radius = d * (1.0 + b2) / (4.0 * std::fabs(bulge));
+  c.radius = bulge_radius(d, bulge);
   c.sweep = 4.0 * std::atan(bulge);
   c.start_angle = std::atan2(from.y - c.center.y, from.x - c.center.x);
   return c;

@@ -77,8 +77,7 @@ std::optional<InputError> check_raw_edge(const RawPart& part, int li, int i,
                     "arc with bulge " + format_number(vs[i].bulge) +
                         " lies within the geometric tolerance of its chord; use bulge 0 for a "
                         "straight edge");
-  const double bulge = std::fabs(vs[i].bulge);
-  const double radius = bulge != 0.0 ? chord * (1.0 + bulge * bulge) / (4.0 * bulge) : 0.0;
+  const double radius = vs[i].bulge != 0.0 ? bulge_radius(chord, vs[i].bulge) : 0.0;
   if (radius > kMaxArcRadiusPerSize * tol.size)
     return error_at(part, li, i,
                     "arc with bulge " + format_number(vs[i].bulge) +

@@ -88,7 +88,10 @@ void check_queries(const Pair& pair, const SlicedSpace& space, unsigned seed,
 bool check_pair(const Pair& pair, unsigned seed, const std::string& name) {
   const int before =
       ::testing::UnitTest::GetInstance()->current_test_info()->result()->total_part_count();
-  const CriticalSet set = critical_orientations(pair);
+  SpaceOptions options;
+  options.threads = 1;
+  const SlicedSpace space = compute_space(pair, options);
+  const CriticalSet& set = space.criticals;  // as critical_orientations(pair) finds them
   const testkit::CompletenessReport report = testkit::check_completeness(pair, set);
   for (const std::string& f : report.interval_failures) ADD_FAILURE() << name << ": " << f;
   for (const std::string& m : report.missed) ADD_FAILURE() << name << ": " << m;
@@ -98,9 +101,6 @@ bool check_pair(const Pair& pair, unsigned seed, const std::string& name) {
   // At most 40 critical orientations, evenly spread: the slices most likely to go wrong.
   const size_t n = set.orientations.size(), step = std::max<size_t>(1, n / 40);
   for (size_t i = 0; i < n; i += step) check_slice(pair, set.orientations[i].theta, rng, name, 40);
-  SpaceOptions options;
-  options.threads = 1;
-  const SlicedSpace space = compute_space(pair, options);
   check_queries(pair, space, seed, name);
   check_mesh(pair, space, name);
   return ::testing::UnitTest::GetInstance()->current_test_info()->result()->total_part_count() ==
