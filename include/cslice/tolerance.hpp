@@ -54,6 +54,14 @@ inline constexpr double kSideSliceAngleSquaredPerAngular = kCriticalityPerGeomet
 // least half their product. Triangles below this fraction of geometric x critical_angle are
 // degenerate.
 inline constexpr double kMeshTriangleAreaPerEpsilonAngle = 0.25;
+// A critical slice's boundary cycle may run out and straight back along a piece barely longer
+// than the geometric epsilon (a spike: blocked space of zero width reaching into free space,
+// where three contact curves nearly meet at the critical orientation). Such a spike no longer
+// than a criticality tolerance (kCriticalityPerGeometric geometric epsilons: the distance
+// within which a criticality's configuration counts as on its curves) is that round-off; the
+// mesh leaves it out of the cycle, or the strips on both sides of the slice would each attach
+// to both of its passes.
+inline constexpr double kMeshSpikePerGeometric = kCriticalityPerGeometric;
 // Cutting the mesh at a plane (the seam at theta = pi, partial reconstruction) first moves
 // onto the plane the vertices closer to it than this fraction of the critical angle (theta
 // planes) or of the geometric epsilon (x and y planes), so that no cut leaves a sliver thinner

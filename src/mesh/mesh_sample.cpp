@@ -51,6 +51,7 @@ class Sampler {
           ids.push_back(static_cast<int>(out_.pieces.size()));
           out_.pieces.push_back(sample(p.curve, p.segment));
         }
+        drop_spikes(ids);
         out_.cycles.back().push_back(std::move(ids));
       }
     }
@@ -66,6 +67,30 @@ class Sampler {
   VertexStore& store_;
   SampledSlice out_;
   std::vector<std::pair<Vec2, int>> corners_;
+
+  // Piece b walks piece a back to where it started, and both are short enough to be round-off
+  // (kMeshSpikePerGeometric).
+  bool is_spike(int a, int b) const {
+    const Piece &x = out_.pieces[a], &y = out_.pieces[b];
+    const double limit = kMeshSpikePerGeometric * slice_.epsilon;
+    return x.first() != x.last() && y.first() == x.last() && y.last() == x.first() &&
+           x.length() <= limit && y.length() <= limit;
+  }
+
+  // Leaves round-off spikes out of a boundary cycle (see kMeshSpikePerGeometric), innermost
+  // first; a cycle that is nothing but a spike stays as it is.
+  void drop_spikes(std::vector<int>& cycle) const {
+    for (size_t k = 0; cycle.size() > 2 && k < cycle.size();) {
+      const size_t next = (k + 1) % cycle.size();
+      if (!is_spike(cycle[k], cycle[next])) {
+        ++k;
+        continue;
+      }
+      cycle.erase(cycle.begin() + std::max(k, next));
+      cycle.erase(cycle.begin() + std::min(k, next));
+      k = k > 0 ? k - 1 : 0;  // the pieces now side by side may form an outer spike
+    }
+  }
 
   // The corner vertex at p: an existing one within the slice's epsilon, or a new one.
   int corner(Vec2 p, SegmentLabel label) {

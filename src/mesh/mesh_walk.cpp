@@ -240,6 +240,8 @@ class Walker {
   // (`left` given) what finds no partner is left over; in the second it is closed.
   void walk_group(const std::vector<const Cycle*>& r_cycles,
                   const std::vector<const Cycle*>& c_cycles, Leftovers* left);
+  void chain_darts(std::vector<Step>& steps) const;
+  void chain_group(std::vector<Step>::iterator first, std::vector<Step>::iterator last) const;
   std::vector<Step> join(const Cycle& cycle, const std::vector<Step>& steps);
   void emit_walk(const Cycle& cycle, std::vector<Step> steps);
   bool collapse(const Cycle& cycle);
@@ -319,6 +321,7 @@ void Walker::walk_group(const std::vector<const Cycle*>& r_cycles,
     std::stable_sort(s.begin(), s.end(), [&](const Step& x, const Step& y) {
       return x.at != y.at ? x.at < y.at : along(x) < along(y);
     });
+    chain_darts(s);
     std::vector<Step> walk;
     for (const Step& st : s) {
       walk.push_back(st);
@@ -334,6 +337,45 @@ void Walker::walk_group(const std::vector<const Cycle*>& r_cycles,
       add_cone(r, *r_cycles[i], c.theta, r_lower_, store_, out_);
     }
   }
+}
+
+// Darts of one regular piece that meet end to start follow each other, whatever their middles'
+// positions say: next to a critical slice a piece's curve can move many times its own length
+// (a short contact arc whose circle turns with theta), and the middles of two consecutive
+// darts then project onto the regular piece's carrier almost together, in either order (stress
+// seed 100125). Chains are kept in the order of their first darts.
+void Walker::chain_darts(std::vector<Step>& steps) const {
+  for (size_t g0 = 0, g1 = 0; g0 < steps.size(); g0 = g1) {
+    while (g1 < steps.size() && steps[g1].at == steps[g0].at) ++g1;
+    if (g1 - g0 > 1) chain_group(steps.begin() + g0, steps.begin() + g1);
+  }
+}
+
+// One piece's darts, [first, last).
+void Walker::chain_group(std::vector<Step>::iterator first,
+                         std::vector<Step>::iterator last) const {
+  const std::vector<Step> steps(first, last);
+  const size_t n = steps.size();
+  const auto piece = [&](size_t k) -> const Piece& { return c_.pieces[steps[k].piece]; };
+  const auto follows = [&](size_t k, size_t before) {
+    return k != before && piece(before).last() == piece(k).first() &&
+           piece(before).first() != piece(before).last();
+  };
+  std::vector<char> taken(n, 0), has_predecessor(n, 0);
+  for (size_t k = 0; k < n; ++k)
+    for (size_t j = 0; j < n; ++j) has_predecessor[k] |= follows(k, j);
+  for (size_t head = 0; head < n; ++head) {
+    if (taken[head] || has_predecessor[head]) continue;
+    for (size_t k = head; k < n;) {
+      taken[k] = 1;
+      *first++ = steps[k];
+      size_t next = 0;
+      while (next < n && (taken[next] || !follows(next, k))) ++next;
+      k = next;
+    }
+  }
+  for (size_t k = 0; k < n; ++k)  // chains closed on themselves keep their order
+    if (!taken[k]) *first++ = steps[k];
 }
 
 // Appends the vertices of dart d to a polyline, its start merged with the line's end.
