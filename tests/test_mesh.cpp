@@ -14,11 +14,15 @@
 
 #include "cslice/mesh.hpp"
 #include "support/examples.hpp"
+#include "support/mesh_census.hpp"
 #include "support/random_parts.hpp"
 
 using namespace cslice;
 
 namespace {
+
+using testkit::census;
+using testkit::EdgeCensus;
 
 const char* const kExamples[] = {"disc-in-box",     "cam",          "knee",
                                  "fixture",         "fastener",     "square-peg-hole",
@@ -139,44 +143,6 @@ double surface_area(const ContactMesh& m) {
   double a = 0.0;
   for (const auto& t : m.triangles) a += triangle_area(m, t);
   return a;
-}
-
-// Vertex ids with each seam vertex at theta = pi replaced by its partner at -pi: the closed
-// surface's vertices.
-std::vector<int> seam_identified(const ContactMesh& m) {
-  std::vector<int> id(m.vertices.size());
-  for (size_t v = 0; v < id.size(); ++v) id[v] = static_cast<int>(v);
-  for (auto [at_pi, at_mpi] : m.seam) id[at_pi] = at_mpi;
-  return id;
-}
-
-struct EdgeCensus {
-  int edges = 0, boundary = 0, nonmanifold = 0, same_direction = 0;
-  std::vector<std::pair<int, int>> open;  // edges used once
-};
-
-// Directed edge counts after identifying the seam: a closed, consistently oriented surface has
-// every undirected edge used twice, once in each direction.
-EdgeCensus census(const ContactMesh& m) {
-  const std::vector<int> id = seam_identified(m);
-  std::map<std::pair<int, int>, int> directed;
-  for (const auto& t : m.triangles)
-    for (int k = 0; k < 3; ++k) ++directed[{id[t[k]], id[t[(k + 1) % 3]]}];
-  std::map<std::pair<int, int>, std::pair<int, int>> undirected;  // (forward, backward)
-  for (auto [e, n] : directed) {
-    auto& u = undirected[std::minmax(e.first, e.second)];
-    (e.first < e.second ? u.first : u.second) += n;
-  }
-  EdgeCensus c;
-  for (auto [e, n] : undirected) {
-    ++c.edges;
-    const int total = n.first + n.second;
-    if (total == 1) c.open.push_back(e);
-    if (total == 1) ++c.boundary;
-    if (total > 2) ++c.nonmanifold;
-    if (total == 2 && n.first != 1) ++c.same_direction;
-  }
-  return c;
 }
 
 // Signed area inside the free space's boundary cycles: a bounded component counts its area, the

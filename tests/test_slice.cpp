@@ -16,51 +16,14 @@
 #include "support/examples.hpp"
 #include "support/random_parts.hpp"
 #include "support/random_polygons.hpp"
+#include "support/slice_oracle.hpp"
 
 using namespace cslice;
 
 namespace {
 
+using testkit::check_slice_against_classify;
 using testkit::load_example;
-
-// Checks membership in a free component against classify at random points around the
-// pair; points classify calls contact (within the tolerance band) may go either way.
-// Returns how many points were decisive. Measuring each component sample's clearance takes
-// time quadratic in the parts' sizes: large pairs may skip it.
-int check_against_classify(const Pair& pair, double theta, int points, std::mt19937& rng,
-                           const std::string& what, bool sample_clearance = true) {
-  const Slice slice = compute_slice(pair, theta);
-  PlacementTester tester(pair);
-  // Every sample is strictly free: not blocked and clear of contact. (A pocket narrower than
-  // the tolerance is still a free component; classify's band may call its centre contact.)
-  for (const FreeComponent& c : slice.free_components) {
-    const Pose at{c.sample.x, c.sample.y, theta};
-    EXPECT_NE(tester.classify(at), Placement::blocked)
-        << what << " theta " << theta << ": sample of component " << c.id;
-    if (sample_clearance) {
-      EXPECT_GT(tester.boundary_distance(at), pair.tol.geometric)
-          << what << " theta " << theta << ": sample of component " << c.id;
-    }
-  }
-  Box box = pair.fixed.box;
-  const double reach = std::max(std::fabs(pair.moving.box.lo.x), std::fabs(pair.moving.box.hi.x)) +
-                       std::max(std::fabs(pair.moving.box.lo.y), std::fabs(pair.moving.box.hi.y));
-  box = box.inflated(reach);
-  std::uniform_real_distribution<double> ux(box.lo.x, box.hi.x), uy(box.lo.y, box.hi.y);
-  int decisive = 0;
-  for (int i = 0; i < points; ++i) {
-    const Vec2 p{ux(rng), uy(rng)};
-    const Placement truth = tester.classify({p.x, p.y, theta});
-    if (truth == Placement::contact) continue;
-    ++decisive;
-    const int comp = slice.locate(p);
-    EXPECT_EQ(comp >= 0, truth == Placement::free)
-        << what << " theta " << theta << " point (" << p.x << ", " << p.y << "): classify says "
-        << to_string(truth) << ", slice component " << comp;
-    if (::testing::Test::HasFailure()) return decisive;
-  }
-  return decisive;
-}
 
 // The pair file with every point of both parts moved by a rotation about the origin and
 // then a translation (bulges are unchanged by rigid motions).
@@ -226,7 +189,7 @@ TEST(SliceOracle, PaperExamplesAgreeWithClassify) {
     const Pair pair = load_example(name);
     int decisive = 0;
     for (double theta = -3.0; theta < 3.15; theta += 0.5)
-      decisive += check_against_classify(pair, theta, 400, rng, name);
+      decisive += check_slice_against_classify(pair, theta, 400, rng, name);
     EXPECT_GT(decisive, 3000) << name;
   }
 }
@@ -236,7 +199,8 @@ TEST(SliceOracle, RandomCurvedPairsAgreeWithClassify) {
   std::uniform_real_distribution<double> angle(-kPi, kPi);
   for (int i = 0; i < 60; ++i) {
     const testkit::RandomPair rp = testkit::random_pair(rng, 5 + i % 6, 6 + i % 9, i % 3 == 0);
-    for (int k = 0; k < 3; ++k) check_against_classify(rp.pair, angle(rng), 300, rng, rp.json);
+    for (int k = 0; k < 3; ++k)
+      check_slice_against_classify(rp.pair, angle(rng), 300, rng, rp.json);
     if (HasFailure()) break;
   }
 }
@@ -255,7 +219,7 @@ TEST(SliceOracle, JaggedStarsWithTinyFacesKeepTheirFreeSpace) {
   ASSERT_EQ(s.free_components.size(), 1u);
   EXPECT_FALSE(s.free_components[0].bounded);
   std::mt19937 points(8);
-  check_against_classify(pair, 0.3, 300, points, "jagged");
+  check_slice_against_classify(pair, 0.3, 300, points, "jagged");
 }
 
 TEST(SliceOracle, NearlyTangentArcsCrossingTwiceStayConsistent) {
@@ -306,7 +270,7 @@ TEST(SliceOracle, CriticalOrientationsKeepTheirFreeSpace) {
     for (const FreeComponent& comp : s.free_components) unbounded += comp.bounded ? 0 : 1;
     EXPECT_EQ(unbounded, 1) << what;
     std::mt19937 points(c.seed);
-    EXPECT_GT(check_against_classify(rp.pair, c.theta, 2000, points, what), 1000) << what;
+    EXPECT_GT(check_slice_against_classify(rp.pair, c.theta, 2000, points, what), 1000) << what;
     if (HasFailure()) return;
   }
 }
@@ -360,7 +324,8 @@ TEST(SliceOracle, CurvedStarsWithTinyReflexTurnsKeepTheirFreeSpace) {
     ASSERT_EQ(s.free_components.size(), 1u) << what;
     EXPECT_FALSE(s.free_components[0].bounded) << what;
     std::mt19937 points(seed);
-    EXPECT_GT(check_against_classify(*r.pair, 0.7, 100, points, what, seed == 2026u), 30) << what;
+    EXPECT_GT(check_slice_against_classify(*r.pair, 0.7, 100, points, what, seed == 2026u), 30)
+        << what;
     if (HasFailure()) return;
   }
 }
@@ -383,8 +348,9 @@ TEST(SliceOracle, ShortArcsInARowKeepTheBoundaryClosed) {
     for (const FreeComponent& c : s.free_components) unbounded += c.bounded ? 0 : 1;
     EXPECT_EQ(unbounded, 1) << seed;
     std::mt19937 points(seed);
-    EXPECT_GT(check_against_classify(rp.pair, theta, 500, points, "seed " + std::to_string(seed)),
-              200);
+    EXPECT_GT(
+        check_slice_against_classify(rp.pair, theta, 500, points, "seed " + std::to_string(seed)),
+        200);
   }
 }
 

@@ -13,6 +13,7 @@
 
 #include "cslice/space.hpp"
 #include "support/cli_run.hpp"
+#include "support/completeness.hpp"
 #include "support/examples.hpp"
 #include "support/random_parts.hpp"
 
@@ -64,12 +65,8 @@ void expect_slices_between_spans(const SlicedSpace& space, const std::string& na
   if (n == 0) return;
   std::vector<std::pair<double, double>> spans;  // unwrapped around each orientation's theta
   for (const CriticalOrientation& o : criticals) {
-    double first = o.theta, last = o.theta;
-    for (const Criticality& k : o.criticalities) {
-      first = std::min(first, o.theta + wrap_angle(k.theta - o.theta));
-      last = std::max(last, o.theta + wrap_angle(k.theta - o.theta));
-    }
-    spans.push_back({first, last});
+    const std::vector<double> at = testkit::group_thetas(o);
+    spans.push_back({at.front(), at.back()});
   }
   for (const SpaceSlice& s : space.slices) {
     if (s.kind == SliceKind::critical) continue;

@@ -25,7 +25,9 @@
 #include "cslice/space.hpp"
 #include "support/band.hpp"
 #include "support/completeness.hpp"
+#include "support/mesh_census.hpp"
 #include "support/random_parts.hpp"
+#include "support/slice_oracle.hpp"
 
 using namespace cslice;
 
@@ -34,44 +36,12 @@ namespace {
 std::vector<std::string> g_files;
 unsigned g_first = 0, g_last = 0;
 
-// Membership in a free component against classify at random points around the pair.
-void check_slice(const Pair& pair, double theta, std::mt19937& rng, const std::string& name,
-                 int points = 200) {
-  const Slice slice = compute_slice(pair, theta);
-  PlacementTester tester(pair);
-  for (const FreeComponent& c : slice.free_components)
-    EXPECT_NE(tester.classify({c.sample.x, c.sample.y, theta}), Placement::blocked)
-        << name << " theta " << theta << ": sample of component " << c.id;
-  const double reach = std::max(std::fabs(pair.moving.box.lo.x), std::fabs(pair.moving.box.hi.x)) +
-                       std::max(std::fabs(pair.moving.box.lo.y), std::fabs(pair.moving.box.hi.y));
-  const Box box = pair.fixed.box.inflated(reach);
-  std::uniform_real_distribution<double> ux(box.lo.x, box.hi.x), uy(box.lo.y, box.hi.y);
-  for (int i = 0; i < points; ++i) {
-    const Vec2 p{ux(rng), uy(rng)};
-    const Placement truth = tester.classify({p.x, p.y, theta});
-    if (truth == Placement::contact) continue;
-    EXPECT_EQ(slice.locate(p) >= 0, truth == Placement::free)
-        << name << " theta " << theta << " point (" << p.x << ", " << p.y << ")";
-  }
-}
-
 // Closed and consistently oriented once the seam at theta = pi is identified, as
 // tests/test_mesh.cpp requires of its cases.
 void check_mesh(const Pair& pair, const SlicedSpace& space, const std::string& name) {
   const ContactMesh m = contact_mesh(pair, space);
-  std::vector<int> id(m.vertices.size());
-  for (size_t v = 0; v < id.size(); ++v) id[v] = static_cast<int>(v);
-  for (auto [at_pi, at_minus_pi] : m.seam) id[at_pi] = at_minus_pi;
-  std::map<std::pair<int, int>, std::pair<int, int>> uses;  // per undirected edge: each way
-  for (const auto& t : m.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const int a = id[t[k]], b = id[t[(k + 1) % 3]];
-      auto& u = uses[std::minmax(a, b)];
-      (a < b ? u.first : u.second) += 1;
-    }
-  int bad_edges = 0;
-  for (const auto& [edge, n] : uses) bad_edges += n.first == 1 && n.second == 1 ? 0 : 1;
-  EXPECT_EQ(bad_edges, 0) << name << ": mesh edges not shared by two triangles once each way";
+  EXPECT_EQ(testkit::census(m).bad(), 0)
+      << name << ": mesh edges not shared by two triangles once each way";
   EXPECT_EQ(m.stats.coned_cycles + m.stats.straight_joins + m.stats.unanchored_cycles, 0)
       << name << ": mesh cycles coned " << m.stats.coned_cycles << ", joined straight "
       << m.stats.straight_joins << ", unanchored " << m.stats.unanchored_cycles;
@@ -97,10 +67,12 @@ bool check_pair(const Pair& pair, unsigned seed, const std::string& name) {
   for (const std::string& m : report.missed) ADD_FAILURE() << name << ": " << m;
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> angle(-kPi, kPi);
-  for (int k = 0; k < 3; ++k) check_slice(pair, angle(rng), rng, name);
+  for (int k = 0; k < 3; ++k)
+    testkit::check_slice_against_classify(pair, angle(rng), 200, rng, name, false);
   // At most 40 critical orientations, evenly spread: the slices most likely to go wrong.
   const size_t n = set.orientations.size(), step = std::max<size_t>(1, n / 40);
-  for (size_t i = 0; i < n; i += step) check_slice(pair, set.orientations[i].theta, rng, name, 40);
+  for (size_t i = 0; i < n; i += step)
+    testkit::check_slice_against_classify(pair, set.orientations[i].theta, 40, rng, name, false);
   check_queries(pair, space, seed, name);
   check_mesh(pair, space, name);
   return ::testing::UnitTest::GetInstance()->current_test_info()->result()->total_part_count() ==

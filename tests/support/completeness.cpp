@@ -152,6 +152,14 @@ struct Checker {
 
 }  // namespace
 
+std::vector<double> group_thetas(const CriticalOrientation& o) {
+  std::vector<double> at{o.theta};
+  for (const Criticality& k : o.criticalities)
+    at.push_back(o.theta + wrap_angle(k.theta - o.theta));
+  std::sort(at.begin(), at.end());
+  return at;
+}
+
 CompletenessReport check_completeness(const Pair& pair, const CriticalSet& set,
                                       const CompletenessOptions& options) {
   CompletenessReport report;
@@ -161,10 +169,7 @@ CompletenessReport check_completeness(const Pair& pair, const CriticalSet& set,
     criticals.push_back(o.theta);
     // The span is trusted only as the grouping rule makes it: a chain of criticalities
     // each within the critical angle of the next.
-    std::vector<double> at{o.theta};
-    for (const Criticality& k : o.criticalities)
-      at.push_back(o.theta + wrap_angle(k.theta - o.theta));
-    std::sort(at.begin(), at.end());
+    const std::vector<double> at = group_thetas(o);
     for (size_t k = 1; k < at.size(); ++k)
       if (at[k] - at[k - 1] > pair.tol.critical_angle)
         report.interval_failures.push_back(

@@ -46,6 +46,10 @@ struct CompletenessReport {
   int extraneous = 0;
 };
 
+// The orientation and its group's criticalities, unwrapped around its theta and sorted: the
+// group's span runs from the first to the last.
+std::vector<double> group_thetas(const CriticalOrientation& o);
+
 CompletenessReport check_completeness(const Pair& pair, const CriticalSet& set,
                                       const CompletenessOptions& options = {});
 
