@@ -133,6 +133,9 @@ struct TopologyChecks {
   // nearest stored slice stands in for a side slice, every sample's clearance proving its
   // vertical segment free.
   int joins_by_clearance = 0;
+  // Not a failure: components joined across a critical orientation by carrying their sample
+  // in steps its clearance proves free, where the sample rules left them unjoined.
+  int joins_by_carrying = 0;
   std::vector<std::string> problems;  // the first few, in words
 };
 

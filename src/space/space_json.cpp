@@ -196,6 +196,7 @@ json topology_json(const SpaceTopology& topo) {
             {"side_slices_not_equivalent", k.side_slices_not_equivalent},
             {"joins_by_count", k.joins_by_count},
             {"joins_by_clearance", k.joins_by_clearance},
+            {"joins_by_carrying", k.joins_by_carrying},
             {"orphan_critical_components", k.orphan_critical_components},
             {"refinement_slices", k.refinement_slices},
             {"label_matches", k.label_matches},

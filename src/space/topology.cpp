@@ -30,6 +30,11 @@ constexpr size_t kMaxProblems = 20;  // problems kept in words; the counts keep 
 // nor distinct boundary labels match: 4 shrinks the gap 16 times (the paper examples need
 // none, their labels decide).
 constexpr int kMaxRefinement = 4;
+// Slices a sample may be carried through across a critical orientation (`carry`): a component
+// shrinking to nothing there halves its distance to it per step or slower; 200 steps cost
+// about as much as the slices of one interval, and are taken only for components the sample
+// rules leave unjoined.
+constexpr int kMaxCarrySteps = 200;
 
 // Angle from `start` forward to `theta`, in [0, 2 pi).
 double offset_from(double start, double theta) {
@@ -406,6 +411,8 @@ class TopologyBuilder {
         for (int x = 1; x < nb + na + nc; ++x) local.unite(0, x);
     } else {
       join_by_samples(sb, sa, sc, far_[2 * k], far_[2 * k + 1], local);
+      join_by_carrying(sb, sc, 0, C0, local);
+      join_by_carrying(sa, sc, B0, C0, local);
     }
     // Components of one cell are one (they differ only after a reported match failure).
     for (int x = 0; x < nb; ++x)
@@ -499,6 +506,60 @@ class TopologyBuilder {
     }
   }
 
+  // Joins the sample rules miss. A sample marks a free vertical segment only while its
+  // clearance exceeds the reach times the gap, and a sliver of free space can be thinner than
+  // that even at a side slice (cavity pairs: a triangle split off at a tangency, 0.06 long and
+  // 5e-4 thick, shrank to a third within 7e-4 rad, off its own sample; stress seed 100167: a
+  // lobe of 2e-7 merged through a pinch and left its sample behind). A component of side slice
+  // s joined to no critical component, or a critical component joined to no component of s, is
+  // carried across (`carry`) and joined where it lands. Elements numbered as in `transition`:
+  // s's from `base`, the critical slice's from `c0`.
+  void join_by_carrying(const Slice& s, const Slice& sc, int base, int c0, UnionFind& local) {
+    // Each component of `from` joined to no component of `to` (elements from the bases).
+    const auto carry_unjoined = [&](const Slice& from, int from_base, const Slice& to,
+                                    int to_base) {
+      for (int x = 0; x < component_count(from); ++x) {
+        bool joined = false;
+        for (int y = 0; y < component_count(to) && !joined; ++y)
+          joined = local.find(from_base + x) == local.find(to_base + y);
+        const int y = joined ? -1 : carry(from, x, to);
+        if (y < 0) continue;
+        local.unite(from_base + x, to_base + y);
+        ++topo_.checks.joins_by_carrying;
+      }
+    };
+    carry_unjoined(sc, c0, s, base);
+    carry_unjoined(s, base, sc, c0);
+  }
+
+  // Carries the sample of component c of slice `from` to the orientation of slice `to` along
+  // free vertical segments: each step turns by half the sample's clearance less eps over the
+  // reach, so blocked space, which creeps by at most the reach per radian, cannot get there
+  // (see `clears`); within each slice the point moves to its component's sample, a free path
+  // there. Returns the component of `to` where it lands, or -1 when it leaves free space or
+  // the steps shrink below the angular tolerance or run out (a component shrinking to nothing
+  // at the critical orientation).
+  int carry(const Slice& from, int c, const Slice& to) {
+    if (!slicer_) slicer_.emplace(pair_);
+    const double target = from.theta + wrap_angle(to.theta - from.theta);
+    Vec2 p = from.free_components[c].sample;
+    double theta = from.theta, clearance = sample_clearance(from, c);
+    for (int step = 0; step < kMaxCarrySteps; ++step) {
+      const double turn = 0.5 * (clearance - from.epsilon) / reach_;
+      if (!(turn > pair_.tol.angular)) return -1;
+      const double next =
+          target > theta ? std::min(target, theta + turn) : std::max(target, theta - turn);
+      if (next == target) return to.locate(p);
+      const Slice slice = slicer_->slice(wrap_angle(next));
+      const int d = slice.locate(p);
+      if (d < 0) return -1;
+      p = slice.free_components[d].sample;
+      clearance = sample_clearance(slice, d);
+      theta = next;
+    }
+    return -1;
+  }
+
   int cell_of(const Link& link, int component) const {
     return node_cell_[link.first_node + component];
   }
@@ -584,6 +645,7 @@ class TopologyBuilder {
   std::vector<char> by_count_;  // per critical: joined by joins_follow_from_counts
   std::vector<char> far_;       // 2k, 2k + 1: that side's stored slice stands in (clears)
   double reach_ = moving_reach(pair_.moving);
+  std::optional<Slicer> slicer_;          // for carrying samples across critical orientations
   std::vector<std::vector<int>> stored_;  // per interval: its non-critical slices, by theta
   std::vector<int> critical_slice_, representative_;
   std::vector<Slice> sides_;  // 2k: before critical k, 2k + 1: after it
