@@ -14,6 +14,7 @@
 #include "cslice/classify.hpp"
 #include "cslice/space.hpp"
 #include "support/cli_run.hpp"
+#include "support/crossings.hpp"
 #include "support/examples.hpp"
 #include "support/random_parts.hpp"
 #include "support/spaces.hpp"
@@ -430,65 +431,25 @@ const char* const kSliverPairs[] = {
     R"(,0],[3.1118487198520572,-1.1786520496286799,0]]]}})"};
 const double kSliverSplits[] = {-1.008745056, -1.285348561};
 
-// How far p lies from the boundary of the slice's free space.
-double clearance_in(const Slice& slice, Vec2 p) {
-  double d = std::numeric_limits<double>::infinity();
-  for (const FreeComponent& c : slice.free_components)
-    for (const auto& cycle : c.boundary)
-      for (const ContactPiece& piece : cycle) d = std::min(d, distance_to_curve(piece.curve, p));
-  return d;
-}
-
-// Carries the free configuration (p, from) to orientation `to` by free vertical segments, each
-// short enough that blocked space, which creeps by at most the moving part's reach per radian,
-// cannot cover p's clearance in the slice, less its epsilon; within each slice it moves to its
-// component's sample (a free path there). Returns the component of the slice at `to` where it
-// lands, -1 where a step gets too short. (The sliver is thinner than the contact tolerance, so
-// classify's band cannot tell this.)
-int carry_finely(const Pair& pair, Vec2 p, double from, double to) {
-  Slicer slicer(pair);
-  const double reach = moving_reach(pair.moving);
-  Slice slice = slicer.slice(from);
-  for (double theta = from;;) {
-    if (slice.locate(p) < 0) return -1;
-    const double step = 0.5 * (clearance_in(slice, p) - slice.epsilon) / reach;
-    if (!(step > 1e-9)) return -1;
-    const double next = to < theta ? std::max(to, theta - step) : std::min(to, theta + step);
-    slice = slicer.slice(next);
-    const int c = slice.locate(p);
-    if (c < 0 || next == to) return c;
-    p = slice.free_components[c].sample;
-    theta = next;
-  }
-}
-
-// Carries every free component of the stored slice on side `from_after` of the critical slice
-// near theta across it to the stored slice on the other side, and expects each to land in a
-// component of the same 3D component. Returns how many components crossed.
-int expect_crossings_joined(const Pair& pair, double theta, bool from_after,
-                            const std::string& what) {
-  const SlicedSpace space = space_of(pair);
-  int at = -1;
+// The stored slice's index of the critical orientation at theta.
+int critical_slice_at(const SlicedSpace& space, double theta) {
   for (int s = 0; s < static_cast<int>(space.slices.size()); ++s)
     if (space.slices[s].kind == SliceKind::critical &&
         std::fabs(space.slices[s].theta - theta) < 1e-6)
-      at = s;
-  if (at <= 0 || at + 1 >= static_cast<int>(space.slices.size())) {
-    ADD_FAILURE() << what << ": no critical slice inside the turn at " << theta;
+      return s;
+  return -1;
+}
+
+// testkit::expect_crossings_joined at the critical orientation at theta.
+int expect_crossings_joined(const Pair& pair, double theta, bool from_after,
+                            const std::string& what) {
+  const SlicedSpace space = space_of(pair);
+  const int at = critical_slice_at(space, theta);
+  if (at < 0) {
+    ADD_FAILURE() << what << ": no critical orientation at " << theta;
     return 0;
   }
-  const int from = from_after ? at + 1 : at - 1, to = from_after ? at - 1 : at + 1;
-  const SpaceSlice &a = space.slices[from], &b = space.slices[to];
-  int crossed = 0;
-  for (const FreeComponent& c : a.slice.free_components) {
-    const int land = carry_finely(pair, c.sample, a.theta, b.theta);
-    if (land < 0) continue;  // it vanishes at theta
-    ++crossed;
-    EXPECT_EQ(space.topology.slice_components[from][c.id],
-              space.topology.slice_components[to][land])
-        << what << ": component " << c.id << " of the slice at " << a.theta;
-  }
-  return crossed;
+  return testkit::expect_crossings_joined(pair, space, at, from_after, what);
 }
 
 // The triangle after the tangency, carried down across it, lands in the component it split

@@ -6,10 +6,11 @@
 // Each pair goes through the checks the tests make on a few: the completeness of its
 // critical orientations (tests/support/completeness.hpp), its slices at random and at critical
 // orientations against `classify`, point queries on its computed space against `classify`
-// outside the contact tolerance band, and its contact mesh closed (every edge shared by two
-// triangles once each way, nothing coned or joined straight). A failing pair is printed (its file,
-// or its JSON for a seed) and the exit status is 1. Not run by ctest: a few hundred pairs take
-// minutes.
+// outside the contact tolerance band, its contact mesh closed (every edge shared by two
+// triangles once each way, nothing coned or joined straight), and the 3D topology's joins at
+// every critical orientation against components carried across it (tests/support/crossings). A
+// failing pair is printed (its file, or its JSON for a seed) and the exit status is 1. Not run by
+// ctest: a few hundred pairs take minutes.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,6 +26,7 @@
 #include "cslice/space.hpp"
 #include "support/band.hpp"
 #include "support/completeness.hpp"
+#include "support/crossings.hpp"
 #include "support/mesh_census.hpp"
 #include "support/random_parts.hpp"
 #include "support/slice_oracle.hpp"
@@ -75,6 +77,10 @@ bool check_pair(const Pair& pair, unsigned seed, const std::string& name) {
     testkit::check_slice_against_classify(pair, set.orientations[i].theta, 40, rng, name, false);
   check_queries(pair, space, seed, name);
   check_mesh(pair, space, name);
+  for (int at = 0; at < static_cast<int>(space.slices.size()); ++at)
+    if (space.slices[at].kind == SliceKind::critical)
+      for (bool from_after : {false, true})
+        testkit::expect_crossings_joined(pair, space, at, from_after, name);
   return ::testing::UnitTest::GetInstance()->current_test_info()->result()->total_part_count() ==
          before;
 }
