@@ -484,6 +484,14 @@ TEST(SpaceTopology, TriangleChangingASideStaysJoined) {
   EXPECT_EQ(expect_crossings_joined(stress_pair(100668), 2.147627214, true, "stress 100668"), 2);
 }
 
+// Stress seed 107007: a triangle of area 3e-13 at theta = -1.930340995 vanishes 6e-6 rad later;
+// its sample, carried 1e-3 rad back to the side slice, takes 620 steps of its clearance.
+TEST(SpaceTopology, ThinTriangleCarriedFarStaysJoined) {
+  const Pair pair = stress_pair(107007);
+  EXPECT_EQ(expect_crossings_joined(pair, -1.930340995, false, "stress 107007"), 2);
+  EXPECT_EQ(expect_crossings_joined(pair, -1.930340995, true, "stress 107007"), 2);
+}
+
 // ---- The file and the stats column ------------------------------------------------------
 
 class TopologyCli : public testkit::ScratchDirTest {

@@ -30,11 +30,13 @@ constexpr size_t kMaxProblems = 20;  // problems kept in words; the counts keep 
 // nor distinct boundary labels match: 4 shrinks the gap 16 times (the paper examples need
 // none, their labels decide).
 constexpr int kMaxRefinement = 4;
-// Slices a sample may be carried through across a critical orientation (`carry`): a component
-// shrinking to nothing there halves its distance to it per step or slower; 200 steps cost
-// about as much as the slices of one interval, and are taken only for components the sample
-// rules leave unjoined.
-constexpr int kMaxCarrySteps = 200;
+// Slices a sample may be carried through from a critical slice to a side (`carry`): each step
+// turns by half the sample's clearance over the reach, and a thin component growing away from
+// the critical orientation at a small fraction of the reach per radian multiplies its
+// clearance by little per step (stress seed 107007: 620 steps across 1e-3 rad from a
+// triangle of area 3e-13). Taken only for critical components thinner than the reach times
+// the side's gap.
+constexpr int kMaxCarrySteps = 1000;
 
 // Angle from `start` forward to `theta`, in [0, 2 pi).
 double offset_from(double start, double theta) {
@@ -510,26 +512,20 @@ class TopologyBuilder {
   // clearance exceeds the reach times the gap, and a sliver of free space can be thinner than
   // that even at a side slice (cavity pairs: a triangle split off at a tangency, 0.06 long and
   // 5e-4 thick, shrank to a third within 7e-4 rad, off its own sample; stress seed 100167: a
-  // lobe of 2e-7 merged through a pinch and left its sample behind). A component of side slice
-  // s joined to no critical component, or a critical component joined to no component of s, is
-  // carried across (`carry`) and joined where it lands. Elements numbered as in `transition`:
-  // s's from `base`, the critical slice's from `c0`.
+  // lobe of 2e-7 merged through a pinch and left its sample behind). A component of the
+  // critical slice has area, so it continues on both sides: each whose sample is not proved
+  // to stand for a free segment to side slice s is carried across (`carry`) and joined where it
+  // lands. Elements numbered as in `transition`: s's from `base`, the critical slice's from
+  // `c0`.
   void join_by_carrying(const Slice& s, const Slice& sc, int base, int c0, UnionFind& local) {
-    // Each component of `from` joined to no component of `to` (elements from the bases).
-    const auto carry_unjoined = [&](const Slice& from, int from_base, const Slice& to,
-                                    int to_base) {
-      for (int x = 0; x < component_count(from); ++x) {
-        bool joined = false;
-        for (int y = 0; y < component_count(to) && !joined; ++y)
-          joined = local.find(from_base + x) == local.find(to_base + y);
-        const int y = joined ? -1 : carry(from, x, to);
-        if (y < 0) continue;
-        local.unite(from_base + x, to_base + y);
-        ++topo_.checks.joins_by_carrying;
-      }
-    };
-    carry_unjoined(sc, c0, s, base);
-    carry_unjoined(s, base, sc, c0);
+    const double motion = reach_ * std::fabs(wrap_angle(s.theta - sc.theta));
+    for (int c = 0; c < component_count(sc); ++c) {
+      if (sample_clearance(sc, c) - sc.epsilon > motion) continue;  // its sample rule holds
+      const int a = carry(sc, c, s);
+      if (a < 0 || local.find(c0 + c) == local.find(base + a)) continue;
+      local.unite(c0 + c, base + a);
+      ++topo_.checks.joins_by_carrying;
+    }
   }
 
   // Carries the sample of component c of slice `from` to the orientation of slice `to` along
