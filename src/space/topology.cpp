@@ -520,26 +520,27 @@ class TopologyBuilder {
   void join_by_carrying(const Slice& s, const Slice& sc, int base, int c0, UnionFind& local) {
     const double motion = reach_ * std::fabs(wrap_angle(s.theta - sc.theta));
     for (int c = 0; c < component_count(sc); ++c) {
-      if (sample_clearance(sc, c) - sc.epsilon > motion) continue;  // its sample rule holds
-      const int a = carry(sc, c, s);
+      const double clearance = sample_clearance(sc, c);
+      if (clearance - sc.epsilon > motion) continue;  // its sample rule holds
+      const int a = carry(sc, c, clearance, s);
       if (a < 0 || local.find(c0 + c) == local.find(base + a)) continue;
       local.unite(c0 + c, base + a);
       ++topo_.checks.joins_by_carrying;
     }
   }
 
-  // Carries the sample of component c of slice `from` to the orientation of slice `to` along
-  // free vertical segments: each step turns by half the sample's clearance less eps over the
-  // reach, so blocked space, which creeps by at most the reach per radian, cannot get there
-  // (see `clears`); within each slice the point moves to its component's sample, a free path
-  // there. Returns the component of `to` where it lands, or -1 when it leaves free space or
+  // Carries the sample of component c of slice `from` (its clearance given) to the orientation
+  // of slice `to` along free vertical segments: each step turns by half the sample's clearance
+  // less eps over the reach, so blocked space, which creeps by at most the reach per radian,
+  // cannot get there (see `clears`); within each slice the point moves to its component's
+  // sample, a free path there. Returns the component of `to` where it lands, or -1 when it leaves free space or
   // the steps shrink below the angular tolerance or run out (a component shrinking to nothing
   // at the critical orientation).
-  int carry(const Slice& from, int c, const Slice& to) {
+  int carry(const Slice& from, int c, double clearance, const Slice& to) {
     if (!slicer_) slicer_.emplace(pair_);
     const double target = from.theta + wrap_angle(to.theta - from.theta);
     Vec2 p = from.free_components[c].sample;
-    double theta = from.theta, clearance = sample_clearance(from, c);
+    double theta = from.theta;
     for (int step = 0; step < kMaxCarrySteps; ++step) {
       const double turn = 0.5 * (clearance - from.epsilon) / reach_;
       if (!(turn > pair_.tol.angular)) return -1;
