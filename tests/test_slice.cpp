@@ -336,8 +336,7 @@ TEST(SliceOracle, CurvedStarsWithTinyReflexTurnsKeepTheirFreeSpace) {
 // orientations critical_orientations finds near these angles.
 TEST(SliceOracle, ShortArcsInARowKeepTheBoundaryClosed) {
   for (auto [seed, near] : {std::pair{100283u, -2.3438159928}, std::pair{100289u, 0.2873553446}}) {
-    std::mt19937 rng(seed);
-    const testkit::RandomPair rp = testkit::random_pair(rng, 8, seed == 100283u ? 10 : 11, false);
+    const testkit::RandomPair rp = testkit::stress_pair(seed);
     const CriticalSet set = critical_orientations(rp.pair);
     double theta = near + 1.0;
     for (const CriticalOrientation& o : set.orientations)

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <set>
@@ -464,30 +463,31 @@ TEST(SpaceTopology, SliverSplitOffAtATangencyStaysJoined) {
   }
 }
 
-Pair stress_pair(unsigned seed) {  // as tests/stress draws them
-  std::mt19937 rng(seed);
-  return testkit::random_pair(rng, 3 + int(seed % 6), 4 + int(seed / 7 % 8), seed % 3 == 0).pair;
-}
-
 // Stress seed 100167 (tests/stress): at theta = 1.182405435 a lobe of area 2e-7 merges through
 // a pinch with its neighbour (2.9e-5); 1e-3 rad later its sample was no longer in the merged
 // component, and the lobe was taken to vanish: a 3D component of its own.
 TEST(SpaceTopology, LobeMergingThroughAPinchStaysJoined) {
-  EXPECT_EQ(expect_crossings_joined(stress_pair(100167), 1.182405435, false, "stress 100167"), 3);
+  EXPECT_EQ(expect_crossings_joined(testkit::stress_pair(100167).pair, 1.182405435, false,
+                                    "stress 100167"),
+            3);
 }
 
 // Stress seed 100668: a triangle of area 7e-9 changes one side's feature pair at
 // theta = 2.147627214 and grows fast after it; its sample had left it 1e-3 rad later, and the
 // triangle was taken to vanish and another to appear (no labels in common to match them by).
 TEST(SpaceTopology, TriangleChangingASideStaysJoined) {
-  EXPECT_EQ(expect_crossings_joined(stress_pair(100668), 2.147627214, false, "stress 100668"), 2);
-  EXPECT_EQ(expect_crossings_joined(stress_pair(100668), 2.147627214, true, "stress 100668"), 2);
+  EXPECT_EQ(expect_crossings_joined(testkit::stress_pair(100668).pair, 2.147627214, false,
+                                    "stress 100668"),
+            2);
+  EXPECT_EQ(expect_crossings_joined(testkit::stress_pair(100668).pair, 2.147627214, true,
+                                    "stress 100668"),
+            2);
 }
 
 // Stress seed 107007: a triangle of area 3e-13 at theta = -1.930340995 vanishes 6e-6 rad later;
 // its sample, carried 1e-3 rad back to the side slice, takes 620 steps of its clearance.
 TEST(SpaceTopology, ThinTriangleCarriedFarStaysJoined) {
-  const Pair pair = stress_pair(107007);
+  const Pair pair = testkit::stress_pair(107007).pair;
   EXPECT_EQ(expect_crossings_joined(pair, -1.930340995, false, "stress 107007"), 2);
   EXPECT_EQ(expect_crossings_joined(pair, -1.930340995, true, "stress 107007"), 2);
 }

@@ -1,6 +1,6 @@
 // cslice_stress: a bug hunt over many pairs, beyond what the test suite can afford to run.
 //
-//   cslice_stress --seeds FIRST LAST    random curved pairs FIRST..LAST-1 (testkit::random_pair)
+//   cslice_stress --seeds FIRST LAST    random curved pairs FIRST..LAST-1 (testkit::stress_pair)
 //   cslice_stress PAIR.json ...         pair files (designed fits, imported parts)
 //
 // Each pair goes through the checks the tests make on a few: the completeness of its
@@ -13,20 +13,19 @@
 // ctest: a few hundred pairs take minutes.
 #include <gtest/gtest.h>
 
-#include <cmath>
+#include <algorithm>
 #include <iostream>
-#include <map>
 #include <random>
 #include <string>
 #include <vector>
 
-#include "cslice/classify.hpp"
 #include "cslice/mesh.hpp"
 #include "cslice/query.hpp"
 #include "cslice/space.hpp"
 #include "support/band.hpp"
 #include "support/completeness.hpp"
 #include "support/crossings.hpp"
+#include "support/failures.hpp"
 #include "support/mesh_census.hpp"
 #include "support/random_parts.hpp"
 #include "support/slice_oracle.hpp"
@@ -58,8 +57,7 @@ void check_queries(const Pair& pair, const SlicedSpace& space, unsigned seed,
 
 // Returns whether the pair passed every check.
 bool check_pair(const Pair& pair, unsigned seed, const std::string& name) {
-  const int before =
-      ::testing::UnitTest::GetInstance()->current_test_info()->result()->total_part_count();
+  const int before = testkit::failures_so_far();
   SpaceOptions options;
   options.threads = 1;
   const SlicedSpace space = compute_space(pair, options);
@@ -81,16 +79,13 @@ bool check_pair(const Pair& pair, unsigned seed, const std::string& name) {
     if (space.slices[at].kind == SliceKind::critical)
       for (bool from_after : {false, true})
         testkit::expect_crossings_joined(pair, space, at, from_after, name);
-  return ::testing::UnitTest::GetInstance()->current_test_info()->result()->total_part_count() ==
-         before;
+  return testkit::failures_so_far() == before;
 }
 
 TEST(Stress, Pairs) {
   int checked = 0, failed = 0;
   for (unsigned seed = g_first; seed < g_last; ++seed) {
-    std::mt19937 rng(seed);
-    const testkit::RandomPair p =
-        testkit::random_pair(rng, 3 + int(seed % 6), 4 + int(seed / 7 % 8), seed % 3 == 0);
+    const testkit::RandomPair p = testkit::stress_pair(seed);
     ++checked;
     if (!check_pair(p.pair, seed, "seed " + std::to_string(seed))) {
       ++failed;

@@ -42,4 +42,9 @@ RandomPair random_pair(std::mt19937& rng, int moving_vertices, int fixed_vertice
   }
 }
 
+RandomPair stress_pair(unsigned seed) {
+  std::mt19937 rng(seed);
+  return random_pair(rng, 3 + int(seed % 6), 4 + int(seed / 7 % 8), seed % 3 == 0);
+}
+
 }  // namespace cslice::testkit

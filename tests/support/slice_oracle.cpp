@@ -7,15 +7,13 @@
 
 #include "cslice/classify.hpp"
 #include "cslice/slice.hpp"
+#include "support/failures.hpp"
 
 namespace cslice::testkit {
 
 int check_slice_against_classify(const Pair& pair, double theta, int points, std::mt19937& rng,
                                  const std::string& what, bool sample_clearance) {
-  const auto failures = [] {
-    return ::testing::UnitTest::GetInstance()->current_test_info()->result()->total_part_count();
-  };
-  const int before = failures();
+  const int before = failures_so_far();
   const Slice slice = compute_slice(pair, theta);
   PlacementTester tester(pair);
   // Every sample is strictly free: not blocked and clear of contact. (A pocket narrower than
@@ -43,7 +41,7 @@ int check_slice_against_classify(const Pair& pair, double theta, int points, std
     EXPECT_EQ(comp >= 0, truth == Placement::free)
         << what << " theta " << theta << " point (" << p.x << ", " << p.y << "): classify says "
         << to_string(truth) << ", slice component " << comp;
-    if (failures() != before) return decisive;
+    if (failures_so_far() != before) return decisive;
   }
   return decisive;
 }
