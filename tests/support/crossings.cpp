@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <numeric>
+#include <vector>
 
 #include "cslice/part.hpp"
 #include "cslice/slice.hpp"
@@ -44,23 +46,85 @@ int carry_finely(const Pair& pair, Vec2 p, double from, double to) {
   return -1;
 }
 
-int expect_crossings_joined(const Pair& pair, const SlicedSpace& space, int at, bool from_after,
-                            const std::string& what) {
+namespace {
+
+// Where each free component of the stored slice next to critical slice `at` (after it when
+// from_after, else before it) lands when carried across to the stored slice on the other
+// side: (component, component landed in), for those that get there.
+struct Crossing {
+  int from, to;  // stored slice indices
+  std::vector<std::pair<int, int>> landed;
+};
+
+Crossing carry_across(const Pair& pair, const SlicedSpace& space, int at, bool from_after) {
   const int n = static_cast<int>(space.slices.size());
-  const int from = (at + (from_after ? 1 : n - 1)) % n, to = (at + (from_after ? n - 1 : 1)) % n;
-  const SpaceSlice &a = space.slices[from], &b = space.slices[to];
+  Crossing x{(at + (from_after ? 1 : n - 1)) % n, (at + (from_after ? n - 1 : 1)) % n, {}};
+  const SpaceSlice &a = space.slices[x.from], &b = space.slices[x.to];
   const double target = a.theta + wrap_angle(b.theta - a.theta);
-  int crossed = 0;
   for (const FreeComponent& c : a.slice.free_components) {
     const int land = carry_finely(pair, c.sample, a.theta, target);
-    if (land < 0) continue;  // it vanishes at the critical orientation
-    ++crossed;
-    EXPECT_EQ(space.topology.slice_components[from][c.id],
-              space.topology.slice_components[to][land])
-        << what << ": component " << c.id << " of the slice at " << a.theta
-        << " carried across the critical orientation " << space.slices[at].theta;
+    if (land >= 0) x.landed.emplace_back(c.id, land);  // else it vanishes at the critical
   }
-  return crossed;
+  return x;
+}
+
+void expect_landed_joined(const SlicedSpace& space, int at, const Crossing& x,
+                          const std::string& what) {
+  for (auto [c, land] : x.landed)
+    EXPECT_EQ(space.topology.slice_components[x.from][c],
+              space.topology.slice_components[x.to][land])
+        << what << ": component " << c << " of the slice at " << space.slices[x.from].theta
+        << " carried across the critical orientation " << space.slices[at].theta;
+}
+
+const CriticalTransition* transition_at(const SlicedSpace& space, int at) {
+  for (const CriticalTransition& t : space.topology.transitions)
+    if (t.theta == space.slices[at].theta) return &t;
+  return nullptr;
+}
+
+}  // namespace
+
+int expect_crossings_joined(const Pair& pair, const SlicedSpace& space, int at, bool from_after,
+                            const std::string& what) {
+  const Crossing x = carry_across(pair, space, at, from_after);
+  expect_landed_joined(space, at, x, what);
+  return static_cast<int>(x.landed.size());
+}
+
+int expect_joins_witnessed(const Pair& pair, const SlicedSpace& space, int at,
+                           const std::string& what) {
+  const CriticalTransition* t = transition_at(space, at);
+  if (t == nullptr) {
+    ADD_FAILURE() << what << ": no transition at the critical slice " << space.slices[at].theta;
+    return 0;
+  }
+  const std::vector<std::vector<int>>& cells = space.topology.slice_cells;
+  // Classes of cells the carries join (kept apart from the library's own union-find).
+  std::vector<int> parent(space.topology.cells.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&](int c) {
+    while (parent[c] != c) c = parent[c];
+    return c;
+  };
+  for (bool from_after : {false, true}) {
+    const Crossing x = carry_across(pair, space, at, from_after);
+    expect_landed_joined(space, at, x, what);
+    for (auto [c, land] : x.landed) parent[root(cells[x.from][c])] = root(cells[x.to][land]);
+  }
+  int unwitnessed = 0;
+  for (const TransitionEvent& e : t->events) {
+    std::vector<int> joined = e.before;
+    joined.insert(joined.end(), e.after.begin(), e.after.end());
+    for (int cell : joined) {
+      if (root(cell) == root(joined.front())) continue;
+      ++unwitnessed;
+      ADD_FAILURE() << what << ": cells " << joined.front() << " and " << cell
+                    << " joined across the critical orientation " << t->theta
+                    << ", but no component carried across joins them";
+    }
+  }
+  return unwitnessed;
 }
 
 }  // namespace cslice::testkit

@@ -25,4 +25,12 @@ int carry_finely(const Pair& pair, Vec2 p, double from, double to);
 int expect_crossings_joined(const Pair& pair, const SlicedSpace& space, int at, bool from_after,
                             const std::string& what);
 
+// The converse, for false joins: carries every free component of both stored slices next to
+// critical slice `at` across (as above, expecting each joined where it lands), and expects the
+// cells of every event of the topology's transition there to be joined by those carries.
+// Returns how many cells of the events no carry joins to the rest (each a failure: a join the
+// sample rules made that nothing carried confirms, or a component too thin to carry).
+int expect_joins_witnessed(const Pair& pair, const SlicedSpace& space, int at,
+                           const std::string& what);
+
 }  // namespace cslice::testkit
