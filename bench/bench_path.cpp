@@ -50,7 +50,8 @@ void BM_PathRandom(benchmark::State& state, const char* name) {
   std::mt19937 rng(7);
   std::vector<std::pair<Pose, Pose>> queries;
   for (int k = 0; k < 64; ++k)
-    queries.push_back({testkit::random_free_pose(pair, rng), testkit::random_free_pose(pair, rng)});
+    queries.push_back({testkit::random_free_pose(pair, rng).value(),
+                       testkit::random_free_pose(pair, rng).value()});
   run(state, pair, space, queries, false);
 }
 

@@ -2,10 +2,10 @@
 
 namespace cslice::testkit {
 
-Pose random_free_pose(const Pair& pair, std::mt19937& rng) {
+std::optional<Pose> random_free_pose(const Pair& pair, std::mt19937& rng) {
   std::uniform_real_distribution<double> ut(-kPi, kPi), unit(0.0, 1.0);
   PlacementTester tester(pair);
-  for (;;) {
+  for (int slices = 0; slices < kMaxSlicesTried; ++slices) {
     const Slice s = compute_slice(pair, ut(rng));
     if (s.free_components.empty()) continue;
     const size_t n = s.free_components.size();
@@ -23,6 +23,7 @@ Pose random_free_pose(const Pair& pair, std::mt19937& rng) {
         return pose;
     }
   }
+  return std::nullopt;
 }
 
 }  // namespace cslice::testkit
