@@ -190,6 +190,26 @@ Curve make_arc_using(TrigSource& trig, Vec2 center, double radius, double start_
   c.bulge = c.is_full_circle() ? std::numeric_limits<double>::infinity() : trig.tan(c.sweep / 4.0);
   return c;
 }
+// make_arc for an arc whose ends are known already (the vertices or corners a piece is snapped
+// to): `from` and `to` as given instead of computed from the angles, so no sine or cosine.
+template <class TrigSource>
+Curve make_arc_between_using(TrigSource& trig, Vec2 center, double radius, double start_angle,
+                             double sweep, Vec2 from, Vec2 to) {
+  Curve c;
+  c.center = center;
+  c.radius = radius;
+  c.start_angle = start_angle;
+  c.sweep = std::clamp(sweep, -kTwoPi, kTwoPi);
+  c.from = from;
+  c.to = to;
+  c.bulge = c.is_full_circle() ? std::numeric_limits<double>::infinity() : trig.tan(c.sweep / 4.0);
+  return c;
+}
+inline Curve make_arc_between(Vec2 center, double radius, double start_angle, double sweep,
+                              Vec2 from, Vec2 to) {
+  PlainTrig trig;
+  return make_arc_between_using(trig, center, radius, start_angle, sweep, from, to);
+}
 // Full circle traversed counterclockwise (sweep = 2pi) or clockwise, starting at angle 0.
 Curve make_circle(Vec2 center, double radius, bool counterclockwise = true);
 

@@ -23,7 +23,10 @@ struct QueryStats {
   std::size_t queries = 0;
   std::size_t at_stored_slice = 0;  // at a critical orientation: the stored slice answered
   std::size_t evaluated = 0;        // the interval's boundary evaluated in closed form at theta
-  std::size_t fallback = 0;         // a slice computed at theta (compute_slice) answered
+  // Of those, answered by the interval's nearest stored slice: no realizable contact curve
+  // comes within the contact tolerance of (x, y) between its orientation and theta.
+  std::size_t far_from_contact = 0;
+  std::size_t fallback = 0;                // a slice computed at theta (compute_slice) answered
   int intervals = 0, exact_intervals = 0;  // intervals whose boundary model validated
 };
 

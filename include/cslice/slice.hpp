@@ -91,6 +91,9 @@ struct Slice {
   // The free component whose interior holds p, or -1 (blocked, or within the geometric
   // epsilon of contact space).
   int locate(Vec2 p) const;
+  // locate for a point already known to lie farther than epsilon from every boundary piece:
+  // the same answer by the parity tests alone.
+  int locate_off_boundary(Vec2 p) const;
 };
 
 // Contact segments of every compatible feature pair at theta, after local overlap filtering.

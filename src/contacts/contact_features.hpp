@@ -70,5 +70,9 @@ class ContactMaker {
 // out.size().
 void add_pair_contacts(const Pair& pair, const ContactFeature& m, const ContactFeature& f,
                        double theta, std::vector<ContactSegment>& out);
+// The same with the rotation given: turn = Transform(Pose{0, 0, theta}), for callers that
+// rebuild several pairs at one orientation (a query) and so turn once.
+void add_pair_contacts(const Pair& pair, const ContactFeature& m, const ContactFeature& f,
+                       const Transform& turn, std::vector<ContactSegment>& out);
 
 }  // namespace cslice

@@ -100,11 +100,12 @@ class ContactBuilder {
   // `fixed_normals`, when given, holds unit_vector(f.normals.lo) of every fixed feature f
   // (indexed by f.feature): the normal of a fixed segment, the same at every orientation.
   // `trig`, when given, remembers the arcs' end directions and bulges between slices.
-  ContactBuilder(const Pair& pair, double theta, std::vector<ContactSegment>& out,
+  // `turn` is Transform(Pose{0, 0, theta}): the rotation by theta, computed by the caller.
+  ContactBuilder(const Pair& pair, const Transform& turn, std::vector<ContactSegment>& out,
                  const std::vector<Vec2>* fixed_normals = nullptr, TrigMemo* trig = nullptr)
       : pair_(pair),
-        rot_(Pose{0.0, 0.0, theta}),
-        theta_(theta),
+        rot_(turn),
+        theta_(turn.angle),
         out_(out),
         fixed_normals_(fixed_normals),
         trig_(trig) {}
@@ -354,7 +355,8 @@ ContactMaker::~ContactMaker() = default;
 
 void ContactMaker::segments(double theta, std::vector<ContactSegment>& out) {
   out.clear();
-  ContactBuilder builder(pair_, theta, out, &index_->normals(), trig_.get());
+  ContactBuilder builder(pair_, Transform(Pose{0.0, 0.0, theta}), out, &index_->normals(),
+                         trig_.get());
   for (size_t k = 0; k < moving_.size(); ++k) {
     const ContactFeature& m = moving_[k];
     if (!m.can_touch) continue;
@@ -377,7 +379,12 @@ std::vector<ContactSegment> contact_segments(const Pair& pair, double theta) {
 
 void add_pair_contacts(const Pair& pair, const ContactFeature& m, const ContactFeature& f,
                        double theta, std::vector<ContactSegment>& out) {
-  ContactBuilder(pair, theta, out).add_pair(m, f);
+  add_pair_contacts(pair, m, f, Transform(Pose{0.0, 0.0, theta}), out);
+}
+
+void add_pair_contacts(const Pair& pair, const ContactFeature& m, const ContactFeature& f,
+                       const Transform& turn, std::vector<ContactSegment>& out) {
+  ContactBuilder(pair, turn, out).add_pair(m, f);
 }
 
 }  // namespace cslice

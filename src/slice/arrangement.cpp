@@ -264,19 +264,10 @@ void merge_points(Scratch& s, double eps, std::vector<Vec2>& vertices) {
 // maker computed, when `trig` remembers it.
 Curve piece_of(const Curve& c, double t0, double t1, Vec2 from, Vec2 to, TrigMemo* trig) {
   if (c.is_segment()) return make_segment(from, to);
-  Curve piece;
-  piece.center = c.center;
-  piece.radius = c.radius;
-  piece.start_angle = c.start_angle + t0 * c.sweep;
-  piece.sweep = std::clamp((t1 - t0) * c.sweep, -kTwoPi, kTwoPi);
-  piece.from = from;
-  piece.to = to;
-  if (piece.is_full_circle())
-    piece.bulge = std::numeric_limits<double>::infinity();
-  else
-    piece.bulge =
-        trig && t0 == 0.0 && t1 == 1.0 ? trig->tan(piece.sweep / 4.0) : std::tan(piece.sweep / 4.0);
-  return piece;
+  const double start = c.start_angle + t0 * c.sweep, sweep = (t1 - t0) * c.sweep;
+  if (trig && t0 == 0.0 && t1 == 1.0)
+    return make_arc_between_using(*trig, c.center, c.radius, start, sweep, from, to);
+  return make_arc_between(c.center, c.radius, start, sweep, from, to);
 }
 
 // Groups 0 .. n - 1 by key(i) in [0, keys) (counting sort, stable): the members of group g

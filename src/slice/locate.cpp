@@ -19,21 +19,31 @@ bool may_toggle_parity(const Curve& c, Vec2 p) {
   return c.is_arc() && !(length_squared(p - c.center) >= c.radius * c.radius);
 }
 
-}  // namespace
-
-int Slice::locate(Vec2 p) const {
-  // Even-odd over all boundary cycles of a component: the parity of their union.
-  for (const FreeComponent& c : free_components) {
+// Even-odd over all boundary cycles of a component: the parity of their union. With
+// kNearTest, -1 as soon as p is within eps of a piece.
+template <bool kNearTest>
+int locate_in(const Slice& s, Vec2 p) {
+  for (const FreeComponent& c : s.free_components) {
     bool inside = !c.bounded;
     for (const auto& cycle : c.boundary) {
       for (const ContactPiece& piece : cycle) {
-        if (within_distance(piece.curve, p, epsilon)) return -1;
+        if (kNearTest && within_distance(piece.curve, p, s.epsilon)) return -1;
         if (may_toggle_parity(piece.curve, p) && toggles_parity(piece.curve, p)) inside = !inside;
       }
     }
     if (inside) return c.id;
   }
   return -1;
+}
+
+}  // namespace
+
+int Slice::locate(Vec2 p) const {
+  return locate_in<true>(*this, p);
+}
+
+int Slice::locate_off_boundary(Vec2 p) const {
+  return locate_in<false>(*this, p);
 }
 
 }  // namespace cslice
