@@ -35,10 +35,15 @@ void expect_agrees_with_classify(const Pair& pair, const SlicedSpace& space, int
   EXPECT_EQ(r.mismatches, 0) << name;
   EXPECT_GT(r.checked, queries / 8) << name;
   const QueryStats& st = q.stats();
+  if (st.exact_intervals > 0) {  // both ways of answering from the model were checked
+    EXPECT_GT(st.far_from_contact, 0u) << name;
+    EXPECT_GT(st.evaluated, st.far_from_contact) << name;
+  }
   std::cout << name << ": " << r.checked << " checked (" << r.free_count << " free, "
-            << r.blocked_count << " blocked); " << st.evaluated << " evaluated, " << st.fallback
-            << " fallback, " << st.at_stored_slice << " at critical slices; " << st.exact_intervals
-            << "/" << st.intervals << " intervals exact\n";
+            << r.blocked_count << " blocked); " << st.evaluated << " evaluated ("
+            << st.far_from_contact << " far from contact), " << st.fallback << " fallback, "
+            << st.at_stored_slice << " at critical slices; " << st.exact_intervals << "/"
+            << st.intervals << " intervals exact\n";
 }
 
 // Points on realizable pieces of the stored non-critical slices are contact, by both.
