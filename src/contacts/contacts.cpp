@@ -15,6 +15,7 @@
 #include <bit>
 #include <cstdint>
 #include <optional>
+#include <span>
 
 #include "contacts/contact_features.hpp"
 #include "cslice/slice.hpp"
@@ -231,21 +232,27 @@ class ContactBuilder {
 class NormalIndex {
  public:
   NormalIndex(const std::vector<ContactFeature>& fixed, double angular_eps)
-      : buckets_(std::clamp<size_t>(2 * fixed.size(), 64, 65536)), eps_(angular_eps) {
-    width_ = kTwoPi / double(buckets_.size());
+      : bucket_count_(std::clamp<size_t>(2 * fixed.size(), 64, 65536)), eps_(angular_eps) {
+    width_ = kTwoPi / double(bucket_count_);
     ranges_.resize(fixed.size());
     seen_.assign((fixed.size() + 63) / 64, 0);
-    for (size_t i = 0; i < fixed.size(); ++i) {
-      if (!fixed[i].can_touch) continue;
-      ranges_[i] = range_of(fixed[i].normals);
-      for_each_bucket(ranges_[i], [&](size_t b) { buckets_[b].push_back(int(i)); });
-    }
+    for (size_t i = 0; i < fixed.size(); ++i)
+      if (fixed[i].can_touch) ranges_[i] = range_of(fixed[i].normals);
+    // The buckets' features in one array, bucket by bucket, each in feature order (a counting
+    // sort: one allocation, not one per bucket, which dominated building the index per slice).
+    bucket_start_.assign(bucket_count_ + 1, 0);
+    for (const Range& r : ranges_) for_each_bucket(r, [&](size_t b) { ++bucket_start_[b + 1]; });
+    for (size_t b = 0; b < bucket_count_; ++b) bucket_start_[b + 1] += bucket_start_[b];
+    bucket_items_.resize(bucket_start_.back());
+    std::vector<int> fill(bucket_start_.begin(), bucket_start_.end() - 1);
+    for (size_t i = 0; i < fixed.size(); ++i)
+      for_each_bucket(ranges_[i], [&](size_t b) { bucket_items_[fill[b]++] = int(i); });
     normals_.resize(fixed.size());
     for (size_t i = 0; i < fixed.size(); ++i) normals_[i] = unit_vector(fixed[i].normals.lo);
     if (fixed.size() <= kScanLimit) {
-      masks_.assign(buckets_.size(), 0);
-      for (size_t b = 0; b < buckets_.size(); ++b)
-        for (int i : buckets_[b]) masks_[b] |= uint64_t{1} << i;
+      masks_.assign(bucket_count_, 0);
+      for (size_t b = 0; b < bucket_count_; ++b)
+        for (int i : bucket(b)) masks_[b] |= uint64_t{1} << i;
     }
   }
 
@@ -274,7 +281,7 @@ class NormalIndex {
     touched.clear();
     for_each_bucket_range(r, [&](size_t from, size_t to) {
       for (size_t b = from; b < to; ++b)
-        for (int i : buckets_[b]) {
+        for (int i : bucket(b)) {
           uint64_t& word = seen[size_t(i) / 64];
           if (word == 0) touched.push_back(size_t(i) / 64);
           word |= uint64_t{1} << (size_t(i) % 64);
@@ -303,7 +310,7 @@ class NormalIndex {
   };
 
   Range range_of(const AngleInterval& a) const {
-    const size_t n = buckets_.size();
+    const size_t n = bucket_count_;
     if (a.span + 2.0 * eps_ >= kTwoPi) return {0, n};
     double lo = fmod_two_pi(a.lo - eps_);
     if (lo < 0.0) lo += kTwoPi;
@@ -314,20 +321,25 @@ class NormalIndex {
 
   template <class Fn>
   void for_each_bucket(const Range& r, Fn fn) const {
-    for (size_t k = 0; k < r.count; ++k) fn((r.first + k) % buckets_.size());
+    for (size_t k = 0; k < r.count; ++k) fn((r.first + k) % bucket_count_);
   }
 
   // The same buckets as for_each_bucket, as at most two runs [from, to) without the wrap.
   template <class Fn>
   void for_each_bucket_range(const Range& r, Fn fn) const {
-    const size_t n = buckets_.size(), end = r.first + r.count;
+    const size_t n = bucket_count_, end = r.first + r.count;
     fn(r.first, std::min(end, n));
     if (end > n) fn(size_t{0}, end - n);
   }
 
-  std::vector<std::vector<int>> buckets_;
-  std::vector<Range> ranges_;            // per fixed feature; empty when it cannot touch
-  std::vector<Vec2> normals_;            // per fixed feature, unit_vector(normals.lo)
+  std::span<const int> bucket(size_t b) const {
+    return {bucket_items_.data() + bucket_start_[b], bucket_items_.data() + bucket_start_[b + 1]};
+  }
+
+  size_t bucket_count_;
+  std::vector<int> bucket_start_, bucket_items_;  // bucket b: items [start[b], start[b + 1])
+  std::vector<Range> ranges_;                     // per fixed feature; empty when it cannot touch
+  std::vector<Vec2> normals_;                     // per fixed feature, unit_vector(normals.lo)
   std::vector<uint64_t> masks_;          // per bucket, its features as bits, when there are few
   mutable std::vector<uint64_t> seen_;   // candidates' bitmap of fixed features, left all zero
   mutable std::vector<size_t> touched_;  // the words of seen_ a query marked
