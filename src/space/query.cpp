@@ -396,6 +396,15 @@ struct SpaceQuery::Impl {
     return &lazy_corners[k.id];
   }
 
+  // The turn from theta to stored_theta, both in interval `index`, inside the interval: the
+  // bounds below hold only where no critical orientation lies between, and the short way
+  // round would cross them where an interval spans most of the turn.
+  double turn_within(int index, double theta, double stored_theta) const {
+    if (criticals.empty()) return angle_gap(theta, stored_theta);
+    const double start = criticals[index];
+    return std::fabs(ccw_turn(start, theta) - ccw_turn(start, stored_theta));
+  }
+
   // The query in an exact interval, evaluating only the labels whose curves can lie within
   // the contact tolerance of p or cross the rightward ray from p (the only pieces that can
   // change the even-odd parity): a label's cover at theta lies within |theta - theta_s|
@@ -406,7 +415,7 @@ struct SpaceQuery::Impl {
     size_t nearest = 0;
     double gap = std::numeric_limits<double>::infinity();
     for (size_t i = 0; i < m.thetas.size(); ++i) {
-      const double g = angle_gap(theta, m.thetas[i]);
+      const double g = turn_within(index, theta, m.thetas[i]);
       if (g < gap) {
         gap = g;
         nearest = i;
