@@ -461,9 +461,10 @@ struct SpaceQuery::Impl {
           // The piece lies on its curve, to within a corner's round-off: a curve passing
           // neither near p nor across the ray spares the corners, two intersections.
           const Box& box = curve_box(pm.label);
-          const double e = pair.tol.criticality, r = pair.tol.contact + e;
-          const bool near = label_near[pm.label] && p.x >= box.lo.x - r && p.x <= box.hi.x + r &&
-                            p.y >= box.lo.y - r && p.y <= box.hi.y + r;
+          const double e = pair.tol.criticality;
+          const bool near = label_near[pm.label] && p.x >= box.lo.x - slack &&
+                            p.x <= box.hi.x + slack && p.y >= box.lo.y - slack &&
+                            p.y <= box.hi.y + slack;
           const bool ray =
               may_hold && p.y >= box.lo.y - e && p.y <= box.hi.y + e && p.x <= box.hi.x + e;
           if (!near && !ray) continue;

@@ -533,9 +533,9 @@ class TopologyBuilder {
   // of slice `to` along free vertical segments: each step turns by half the sample's clearance
   // less eps over the reach, so blocked space, which creeps by at most the reach per radian,
   // cannot get there (see `clears`); within each slice the point moves to its component's
-  // sample, a free path there. Returns the component of `to` where it lands, or -1 when it leaves free space or
-  // the steps shrink below the angular tolerance or run out (a component shrinking to nothing
-  // at the critical orientation).
+  // sample, a free path there. Returns the component of `to` where it lands, or -1 when it
+  // leaves free space or the steps shrink below the angular tolerance or run out (a component
+  // shrinking to nothing at the critical orientation).
   int carry(const Slice& from, int c, double clearance, const Slice& to) {
     if (!slicer_) slicer_.emplace(pair_);
     const double target = from.theta + wrap_angle(to.theta - from.theta);
