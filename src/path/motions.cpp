@@ -31,11 +31,6 @@ constexpr long kSliceRouteBudget = 400;
 // orientation up to the round-off of the sums that produced the two values.
 constexpr double kSameTheta = 1e-12;
 
-double offset_from(double start, double theta) {
-  const double d = std::fmod(theta - start, kTwoPi);
-  return d < 0 ? d + kTwoPi : d;
-}
-
 }  // namespace
 
 const Slice& PathPlanner::Impl::slice_at(double theta) {
@@ -81,7 +76,7 @@ int PathPlanner::Impl::interval_of(double theta) const {
 
 double PathPlanner::Impl::interval_offset(int interval, double theta) const {
   const double length = ends[interval] - starts[interval];
-  double off = offset_from(starts[interval], wrap_angle(theta));
+  double off = ccw_turn(starts[interval], wrap_angle(theta));
   if (off > length + 0.5 * (kTwoPi - length)) off -= kTwoPi;
   return off;
 }

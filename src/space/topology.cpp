@@ -38,12 +38,6 @@ constexpr int kMaxRefinement = 4;
 // the side's gap.
 constexpr int kMaxCarrySteps = 1000;
 
-// Angle from `start` forward to `theta`, in [0, 2 pi).
-double offset_from(double start, double theta) {
-  double d = std::fmod(theta - start, kTwoPi);
-  return d < 0 ? d + kTwoPi : d;
-}
-
 int component_count(const Slice& s) {
   return static_cast<int>(s.free_components.size());
 }
@@ -98,8 +92,8 @@ class TopologyBuilder {
     }
     for (int i = 0; i < n; ++i)
       std::stable_sort(stored_[i].begin(), stored_[i].end(), [&](int a, int b) {
-        return offset_from(starts_[i], space_.slices[a].theta) <
-               offset_from(starts_[i], space_.slices[b].theta);
+        return ccw_turn(starts_[i], space_.slices[a].theta) <
+               ccw_turn(starts_[i], space_.slices[b].theta);
       });
   }
 
@@ -120,8 +114,8 @@ class TopologyBuilder {
     for (int k = 0; k < n; ++k) {
       const int before = (k + n - 1) % n;
       const double gap_before =
-          offset_from(space_.slices[stored_[before].back()].theta, criticals_[k]);
-      const double gap_after = offset_from(criticals_[k], space_.slices[stored_[k].front()].theta);
+          ccw_turn(space_.slices[stored_[before].back()].theta, criticals_[k]);
+      const double gap_after = ccw_turn(criticals_[k], space_.slices[stored_[k].front()].theta);
       side_angles_[2 * k] = std::min(gap_before, delta);
       side_angles_[2 * k + 1] = std::min(gap_after, delta);
       by_count_[k] = !options_.verify_joins && joins_follow_from_counts(before, k);
@@ -305,8 +299,7 @@ class TopologyBuilder {
 
   // An extra slice halfway from a to b (forward, across pi if need be), with its own nodes.
   Link refine(int interval, const Link& a, const Link& b) {
-    const double theta =
-        wrap_angle(a.slice->theta + offset_from(a.slice->theta, b.slice->theta) / 2);
+    const double theta = wrap_angle(a.slice->theta + ccw_turn(a.slice->theta, b.slice->theta) / 2);
     if (!refiner_) refiner_.emplace(pair_);
     refined_.push_back(refiner_->slice(theta));
     topo_.checks.refinement_slices += 1;
@@ -357,7 +350,7 @@ class TopologyBuilder {
   }
 
   double offset(int interval, int position) const {
-    return offset_from(starts_[interval], chains_[interval][position].slice->theta);
+    return ccw_turn(starts_[interval], chains_[interval][position].slice->theta);
   }
 
   int new_cell(int interval, const Slice& s, int component) {
@@ -629,7 +622,7 @@ class TopologyBuilder {
       int j = i;
       while (joined(j)) j = (j + 1) % n;
       const double from = starts_[i];
-      const double to = from + offset_from(starts_[i], starts_[j]) + (ends_[j] - starts_[j]);
+      const double to = from + ccw_turn(starts_[i], starts_[j]) + (ends_[j] - starts_[j]);
       comp.theta_ranges.emplace_back(from, to);
     }
   }
