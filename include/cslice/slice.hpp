@@ -23,6 +23,13 @@ enum class ContactKind {
 };
 std::string_view to_string(ContactKind k);
 
+// A feature pair, the label of a contact segment (paper section 4).
+struct SegmentLabel {
+  int moving_feature = 0;
+  int fixed_feature = 0;
+  friend auto operator<=>(const SegmentLabel&, const SegmentLabel&) = default;
+};
+
 // The configurations where one moving feature touches one fixed feature, at this theta.
 struct ContactSegment {
   int id = 0;

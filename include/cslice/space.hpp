@@ -33,13 +33,9 @@ struct SpaceSlice {
   // critical orientation there is one interval, the whole turn, starting at -pi.
   int interval = 0;
   Slice slice;
-};
-
-// A feature pair, the label of a contact segment (paper section 4).
-struct SegmentLabel {
-  int moving_feature = 0;
-  int fixed_feature = 0;
-  friend auto operator<=>(const SegmentLabel&, const SegmentLabel&) = default;
+  // Evaluated from the boundary structure of its interval's representative
+  // (SpaceOptions::evaluate_slices) rather than computed from scratch.
+  bool evaluated = false;
 };
 
 // How the realizable contact segments of slice `from` correspond to those of the next slice
@@ -136,6 +132,9 @@ struct TopologyChecks {
   // Not a failure: components joined across a critical orientation by carrying their sample
   // in steps its clearance proves free, where the sample rules left them unjoined.
   int joins_by_carrying = 0;
+  // Not a failure: side slices evaluated from their interval's representative's boundary
+  // structure (TopologyOptions::evaluate_slices) instead of computed from scratch.
+  int side_slices_evaluated = 0;
   std::vector<std::string> problems;  // the first few, in words
 };
 
@@ -162,11 +161,18 @@ struct SpaceOptions {
   // counts decide the joins, each side slice checked against its interval's representative:
   // the same result (the tests compare), slower; it checks the critical orientations more.
   bool verify_joins = false;
+  // Slices inside an interval other than its representative (the intermediate slices kept
+  // for interpolation, the topology's side slices) evaluated in closed form from the
+  // representative's boundary structure, which holds throughout the interval, where that
+  // structure can be modelled; false computes every slice from scratch (the tests compare
+  // the two). Files are read back with the default.
+  bool evaluate_slices = true;
 };
 
 struct TopologyOptions {
-  int threads = 0;            // as in SpaceOptions
-  bool verify_joins = false;  // as in SpaceOptions
+  int threads = 0;              // as in SpaceOptions
+  bool verify_joins = false;    // as in SpaceOptions
+  bool evaluate_slices = true;  // as in SpaceOptions (side slices; not when verifying joins)
 };
 
 struct SlicedSpace {

@@ -26,24 +26,19 @@ void scan_crossings(const Curve& c, double y, std::vector<double>& xs) {
 
 }  // namespace
 
-Vec2 face_sample(const Arrangement& arr, int face, const Box& box, const Tolerances& tol,
-                 FaceSampleScratch& scratch) {
-  if (!arr.faces[face].bounded) {
-    if (box.empty()) return {0.0, 0.0};
-    const double reach = std::max(box.diagonal(), tol.size);
-    return {box.hi.x + reach, 0.5 * (box.lo.y + box.hi.y)};
-  }
-  std::vector<Curve>& curves = scratch.curves;
-  curves.clear();
-  for (int c : arr.face_cycles(face))
-    for (int h : arr.half_edges(c)) curves.push_back(arr.half_curve(h));
+Vec2 sample_beyond(const Box& box, const Tolerances& tol) {
+  if (box.empty()) return {0.0, 0.0};
+  const double reach = std::max(box.diagonal(), tol.size);
+  return {box.hi.x + reach, 0.5 * (box.lo.y + box.hi.y)};
+}
+
+Vec2 sample_inside(std::span<const Curve> curves, const Box& box, std::vector<double>& xs) {
   // Scan lines at irrational fractions of the height, so they avoid vertices of designed
   // (round-numbered) input.
   constexpr int kLines = 7;
   constexpr double kGolden = 0.6180339887498949;
   Vec2 best = 0.5 * (box.lo + box.hi);
   double best_clearance = -1.0;
-  std::vector<double>& xs = scratch.xs;
   for (int k = 0; k < kLines; ++k) {
     const double frac = std::fmod(0.5 + k * kGolden, 1.0);
     const double y = box.lo.y + frac * (box.hi.y - box.lo.y);
@@ -60,6 +55,16 @@ Vec2 face_sample(const Arrangement& arr, int face, const Box& box, const Toleran
     }
   }
   return best;
+}
+
+Vec2 face_sample(const Arrangement& arr, int face, const Box& box, const Tolerances& tol,
+                 FaceSampleScratch& scratch) {
+  if (!arr.faces[face].bounded) return sample_beyond(box, tol);
+  std::vector<Curve>& curves = scratch.curves;
+  curves.clear();
+  for (int c : arr.face_cycles(face))
+    for (int h : arr.half_edges(c)) curves.push_back(arr.half_curve(h));
+  return sample_inside(curves, box, scratch.xs);
 }
 
 }  // namespace cslice

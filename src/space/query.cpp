@@ -37,33 +37,15 @@
 #include "contacts/contact_features.hpp"
 #include "criticals/families.hpp"
 #include "parts/loop_queries.hpp"
+#include "slice/boundary_model.hpp"
 
 namespace cslice {
 
 namespace {
 
-struct CornerModel {
-  int id = 0;        // index among the interval's corners
-  int a = 0, b = 0;  // label indices of the pieces before and after the corner
-  int rank = 0;      // which hit of intersect(a, b), in order along a
-  int count = 0;     // how many hits there are in the interval
-};
-
-struct PieceModel {
-  int label = 0;
-  int sweep_sign = 0;  // arcs: direction of travel (+1 counterclockwise); segments: 0
-};
-
-struct CycleModel {
-  std::vector<PieceModel> pieces;
-  std::vector<CornerModel> corners;  // corner k ends piece k and starts piece k + 1
-  bool full_circle = false;          // one piece, a whole circle
-};
-
-struct ComponentModel {
-  bool bounded = true;
+// What the queries add to a component of the boundary model.
+struct ComponentBounds {
   int component = -1;  // 3D component
-  std::vector<CycleModel> cycles;
   // Bounded components: the box of its labels' covers at each stored slice, and their
   // largest drift; p outside it (inflated) cannot be inside the component.
   std::vector<Box> boxes;
@@ -74,9 +56,8 @@ struct IntervalModel {
   bool exact = false;
   int representative = -1;
   std::vector<int> stored;  // non-critical stored slices of the interval, by theta
-  std::vector<SegmentLabel> labels;
-  std::vector<ComponentModel> components;
-  int corners = 0;
+  BoundaryModel boundary;
+  std::vector<ComponentBounds> bounds;  // per component of the boundary model
   // Bounds for skipping labels a query cannot need: per label, the box of its family's cover
   // at each stored slice's theta, and how fast the cover can move (per radian).
   std::vector<double> thetas;    // of the stored slices
@@ -89,9 +70,7 @@ struct Evaluated {
   int interval = -1;
   double theta = std::numeric_limits<double>::quiet_NaN();
   bool ok = false;
-  std::vector<Curve> pieces;
-  std::vector<int> piece_label;
-  std::vector<int> component_end;  // pieces of component c: [end[c-1], end[c])
+  EvaluatedBoundary boundary;
 };
 
 double angle_gap(double a, double b) {
@@ -111,7 +90,7 @@ struct SpaceQuery::Impl {
   Evaluated eval;
   std::vector<ContactSegment> scratch_segments;
   std::vector<Curve> scratch_curves;
-  std::vector<std::pair<double, Vec2>> scratch_hits;
+  SortedHits scratch_hits;
   std::deque<std::pair<double, Slice>> fallback_slices;  // most recent first
   std::vector<ContactFamily> families;
   // Per query: which labels may matter, their curves and the corners, evaluated on demand.
@@ -155,19 +134,12 @@ struct SpaceQuery::Impl {
     for (const IntervalModel& m : intervals) stats.exact_intervals += m.exact ? 1 : 0;
   }
 
-  int label_index(IntervalModel& m, SegmentLabel l) {
-    const auto it = std::find(m.labels.begin(), m.labels.end(), l);
-    if (it != m.labels.end()) return static_cast<int>(it - m.labels.begin());
-    m.labels.push_back(l);
-    return static_cast<int>(m.labels.size()) - 1;
-  }
-
   // The contact curve of each label of the model at theta; false unless each label gives
   // exactly one contact segment.
   bool evaluate_curves(const IntervalModel& m, double theta) {
     scratch_curves.clear();
     const Transform turn(Pose{0.0, 0.0, theta});
-    for (const SegmentLabel& l : m.labels) {
+    for (const SegmentLabel& l : m.boundary.labels) {
       scratch_segments.clear();
       add_pair_contacts(pair, moving[l.moving_feature], fixed[l.fixed_feature], turn,
                         scratch_segments);
@@ -177,97 +149,47 @@ struct SpaceQuery::Impl {
     return true;
   }
 
-  // Transversal hits of two curves, sorted along the first; false if they overlap.
-  bool hits_of(const Curve& a, const Curve& b) {
-    scratch_hits.clear();
-    const Intersection x = intersect(a, b, pair.tol.geometric);
-    if (x.kind == IntersectionKind::overlapping) return false;
-    for (int i = 0; i < x.count; ++i) {
-      if (x.hits[i].is_piece) return false;
-      scratch_hits.push_back({x.hits[i].ta0, x.hits[i].point});
-    }
-    std::sort(scratch_hits.begin(), scratch_hits.end(),
-              [](const auto& p, const auto& q) { return p.first < q.first; });
-    return true;
-  }
-
   void build_model(IntervalModel& m) {
     m.exact = false;
     if (m.representative < 0) return;
-    const Slice& rep = space.slices[m.representative].slice;
-    if (!rep.degenerate.empty()) return;
+    std::optional<BoundaryModel> model =
+        model_boundary(space.slices[m.representative].slice, pair.tol);
+    if (!model) return;
+    m.boundary = std::move(*model);
     const auto& comp3d = space.topology.slice_components.at(m.representative);
-    for (const FreeComponent& fc : rep.free_components) {
-      ComponentModel cm;
-      cm.bounded = fc.bounded;
-      cm.component = comp3d.at(fc.id);
-      for (const auto& cycle : fc.boundary) {
-        CycleModel cyc;
-        for (const ContactPiece& piece : cycle) {
-          const ContactSegment& seg = rep.contact_segments.at(piece.segment);
-          const int li = label_index(m, {seg.moving_feature, seg.fixed_feature});
-          cyc.pieces.push_back({li, piece.curve.is_arc() ? (piece.curve.sweep > 0 ? 1 : -1) : 0});
-          if (piece.curve.is_full_circle()) cyc.full_circle = true;
-        }
-        if (cyc.pieces.empty()) return;
-        if (cyc.full_circle && cyc.pieces.size() != 1) return;
-        cm.cycles.push_back(std::move(cyc));
-      }
-      m.components.push_back(std::move(cm));
-    }
-    // Corners: which hit of the two curves each one is at the representative orientation.
-    if (!evaluate_curves(m, space.slices[m.representative].theta)) return;
-    size_t c = 0;
-    for (const FreeComponent& fc : rep.free_components) {
-      for (size_t k = 0; k < fc.boundary.size(); ++k) {
-        CycleModel& cyc = m.components[c].cycles[k];
-        if (cyc.full_circle) continue;
-        const size_t n = cyc.pieces.size();
-        for (size_t i = 0; i < n; ++i) {
-          const int a = cyc.pieces[i].label, b = cyc.pieces[(i + 1) % n].label;
-          if (a == b) return;
-          if (!hits_of(scratch_curves[a], scratch_curves[b]) || scratch_hits.empty()) return;
-          const Vec2 corner = fc.boundary[k][i].curve.to;
-          int best = 0;
-          for (int h = 1; h < static_cast<int>(scratch_hits.size()); ++h)
-            if (distance(scratch_hits[h].second, corner) <
-                distance(scratch_hits[best].second, corner))
-              best = h;
-          if (distance(scratch_hits[best].second, corner) > pair.tol.criticality) return;
-          cyc.corners.push_back({m.corners++, a, b, best, static_cast<int>(scratch_hits.size())});
-        }
-      }
-      ++c;
-    }
+    m.bounds.resize(m.boundary.components.size());
+    for (size_t c = 0; c < m.bounds.size(); ++c) m.bounds[c].component = comp3d.at(c);
     m.exact = true;
     m.exact = validate(m) && build_bounds(m);
   }
 
   bool build_bounds(IntervalModel& m) {
     for (int s : m.stored) m.thetas.push_back(space.slices[s].theta);
-    const size_t labels = m.labels.size();
+    const std::vector<SegmentLabel>& labels_of = m.boundary.labels;
+    const size_t labels = labels_of.size();
     m.cover_boxes.resize(m.thetas.size() * labels);
     for (size_t l = 0; l < labels; ++l) {
       const ContactFamily* family = nullptr;
       for (const ContactFamily& f : families)
-        if (f.moving == m.labels[l].moving_feature && f.fixed == m.labels[l].fixed_feature)
+        if (f.moving == labels_of[l].moving_feature && f.fixed == labels_of[l].fixed_feature)
           family = &f;
       if (family == nullptr) return false;
       for (size_t i = 0; i < m.thetas.size(); ++i)
         m.cover_boxes[i * labels + l] = bounding_box(family_cover(*family, m.thetas[i]));
       m.drift.push_back(family_drift(*family));
     }
-    for (ComponentModel& cm : m.components) {
-      cm.boxes.assign(m.thetas.size(), Box{});
-      for (const CycleModel& cyc : cm.cycles)
+    for (size_t c = 0; c < m.bounds.size(); ++c) {
+      ComponentBounds& cb = m.bounds[c];
+      cb.boxes.assign(m.thetas.size(), Box{});
+      for (const CycleModel& cyc : m.boundary.components[c].cycles)
         for (const PieceModel& pm : cyc.pieces) {
-          cm.drift = std::max(cm.drift, m.drift[pm.label]);
+          cb.drift = std::max(cb.drift, m.drift[pm.label]);
           for (size_t i = 0; i < m.thetas.size(); ++i)
-            cm.boxes[i].add(m.cover_boxes[i * m.labels.size() + pm.label]);
+            cb.boxes[i].add(m.cover_boxes[i * labels + pm.label]);
         }
     }
-    max_labels = std::max(max_labels, m.labels.size());
-    max_corners = std::max(max_corners, static_cast<size_t>(m.corners));
+    max_labels = std::max(max_labels, labels);
+    max_corners = std::max(max_corners, static_cast<size_t>(m.boundary.corners));
     return true;
   }
 
@@ -287,8 +209,8 @@ struct SpaceQuery::Impl {
           pieces += cycle.size();
           for (const ContactPiece& p : cycle) corners.push_back(p.curve.to);
         }
-      if (pieces != eval.pieces.size()) return false;
-      for (const Curve& piece : eval.pieces) {
+      if (pieces != eval.boundary.pieces.size()) return false;
+      for (const Curve& piece : eval.boundary.pieces) {
         bool found = false;
         for (Vec2 q : corners) found = found || distance(q, piece.to) <= pair.tol.criticality;
         if (!found) return false;
@@ -308,63 +230,16 @@ struct SpaceQuery::Impl {
     eval.interval = index;
     eval.theta = theta;
     eval.ok = false;
-    eval.pieces.clear();
-    eval.piece_label.clear();
-    eval.component_end.clear();
     const IntervalModel& m = intervals[index];
-    if (!evaluate_curves(m, theta)) return false;
-    std::vector<Vec2> corner_points;
-    for (const ComponentModel& cm : m.components) {
-      for (const CycleModel& cyc : cm.cycles) {
-        if (cyc.full_circle) {
-          const Curve& c = scratch_curves[cyc.pieces[0].label];
-          if (!c.is_arc()) return false;
-          eval.pieces.push_back(make_circle(c.center, c.radius, cyc.pieces[0].sweep_sign > 0));
-          eval.piece_label.push_back(cyc.pieces[0].label);
-          continue;
-        }
-        const size_t n = cyc.pieces.size();
-        corner_points.clear();
-        for (const CornerModel& k : cyc.corners) {
-          if (!hits_of(scratch_curves[k.a], scratch_curves[k.b])) return false;
-          if (static_cast<int>(scratch_hits.size()) != k.count) return false;
-          corner_points.push_back(scratch_hits[k.rank].second);
-        }
-        for (size_t i = 0; i < n; ++i) {
-          const Vec2 from = corner_points[(i + n - 1) % n], to = corner_points[i];
-          const PieceModel& pm = cyc.pieces[i];
-          Curve piece;
-          if (!make_piece(pm, scratch_curves[pm.label], from, to, piece)) return false;
-          eval.pieces.push_back(piece);
-          eval.piece_label.push_back(pm.label);
-        }
-      }
-      eval.component_end.push_back(static_cast<int>(eval.pieces.size()));
-    }
-    eval.ok = true;
-    return true;
-  }
-
-  // The piece of a contact curve between two corners, in the model's direction.
-  static bool make_piece(const PieceModel& pm, const Curve& c, Vec2 from, Vec2 to, Curve& out) {
-    if (pm.sweep_sign == 0) {
-      out = make_segment(from, to);
-      return true;
-    }
-    if (!c.is_arc()) return false;
-    const double a0 = std::atan2(from.y - c.center.y, from.x - c.center.x);
-    const double a1 = std::atan2(to.y - c.center.y, to.x - c.center.x);
-    double sweep = std::fmod(pm.sweep_sign * (a1 - a0), kTwoPi);
-    if (sweep < 0) sweep += kTwoPi;
-    // Exactly the corners, not their round trip through angles.
-    out = make_arc_between(c.center, c.radius, a0, pm.sweep_sign * sweep, from, to);
-    return true;
+    eval.ok = evaluate_curves(m, theta) &&
+              evaluate_boundary(m.boundary, scratch_curves, pair.tol.geometric, eval.boundary);
+    return eval.ok;
   }
 
   // The contact curve of label l at the query theta, evaluated once per query.
   const Curve* lazy_curve(int l) {
     if (curve_stamp[l] != stamp) {
-      const SegmentLabel& label = current->labels[l];
+      const SegmentLabel& label = current->boundary.labels[l];
       scratch_segments.clear();
       add_pair_contacts(pair, moving[label.moving_feature], fixed[label.fixed_feature], turn,
                         scratch_segments);
@@ -388,9 +263,8 @@ struct SpaceQuery::Impl {
     if (corner_stamp[k.id] != stamp) {
       const Curve* a = lazy_curve(k.a);
       const Curve* b = a ? lazy_curve(k.b) : nullptr;
-      if (!b || !hits_of(*a, *b) || static_cast<int>(scratch_hits.size()) != k.count)
+      if (!b || !corner_point(k, *a, *b, pair.tol.geometric, scratch_hits, lazy_corners[k.id]))
         return nullptr;
-      lazy_corners[k.id] = scratch_hits[k.rank].second;
       corner_stamp[k.id] = stamp;
     }
     return &lazy_corners[k.id];
@@ -423,8 +297,9 @@ struct SpaceQuery::Impl {
     }
     const double slack = pair.tol.contact + pair.tol.criticality;
     bool any_near = false;
-    for (size_t l = 0; l < m.labels.size(); ++l) {
-      const Box& b = m.cover_boxes[nearest * m.labels.size() + l];
+    const size_t labels = m.boundary.labels.size();
+    for (size_t l = 0; l < labels; ++l) {
+      const Box& b = m.cover_boxes[nearest * labels + l];
       const double r = gap * m.drift[l] + slack;
       label_ray[l] = p.y >= b.lo.y - r && p.y <= b.hi.y + r && p.x <= b.hi.x + r;
       label_near[l] = label_ray[l] && p.x >= b.lo.x - r;
@@ -442,12 +317,14 @@ struct SpaceQuery::Impl {
     double best = std::numeric_limits<double>::infinity();
     int best_label = -1, inside_component = -1;
     Curve piece;
-    for (const ComponentModel& cm : m.components) {
+    for (size_t ci = 0; ci < m.bounds.size(); ++ci) {
+      const ComponentModel& cm = m.boundary.components[ci];
+      const ComponentBounds& cb = m.bounds[ci];
       bool inside = !cm.bounded;
       bool may_hold = true;
       if (cm.bounded) {
-        const Box& b = cm.boxes[nearest];
-        const double r = gap * cm.drift + slack;
+        const Box& b = cb.boxes[nearest];
+        const double r = gap * cb.drift + slack;
         may_hold = p.x >= b.lo.x - r && p.x <= b.hi.x + r && p.y >= b.lo.y - r && p.y <= b.hi.y + r;
       }
       for (const CycleModel& cyc : cm.cycles) {
@@ -474,7 +351,7 @@ struct SpaceQuery::Impl {
           } else {
             const Vec2* from = lazy_corner(cyc.corners[(i + n - 1) % n]);
             const Vec2* to = from ? lazy_corner(cyc.corners[i]) : nullptr;
-            if (!to || !make_piece(pm, *c, *from, *to, piece)) return false;
+            if (!to || !piece_between(pm, *c, *from, *to, piece)) return false;
           }
           if (near) {
             const double d = distance_to_curve(piece, p);
@@ -486,11 +363,11 @@ struct SpaceQuery::Impl {
           if (ray && toggles_parity(piece, p)) inside = !inside;
         }
       }
-      if (may_hold && inside && inside_component < 0) inside_component = cm.component;
+      if (may_hold && inside && inside_component < 0) inside_component = cb.component;
     }
     if (best_label >= 0 && best <= pair.tol.contact) {
       a.placement = Placement::contact;
-      a.contact = m.labels[best_label];
+      a.contact = m.boundary.labels[best_label];
     } else {
       a.component = inside_component;
       a.placement = inside_component >= 0 ? Placement::free : Placement::blocked;
@@ -513,12 +390,13 @@ struct SpaceQuery::Impl {
   // The 3D component of the evaluated component whose cycles enclose p, or -1.
   int locate_evaluated(const IntervalModel& m, Vec2 p) const {
     int begin = 0;
-    for (size_t c = 0; c < m.components.size(); ++c) {
-      const int end = eval.component_end[c];
-      bool inside = !m.components[c].bounded;
+    const EvaluatedBoundary& e = eval.boundary;
+    for (size_t c = 0; c < m.bounds.size(); ++c) {
+      const int end = e.component_end[c];
+      bool inside = !m.boundary.components[c].bounded;
       for (int i = begin; i < end; ++i)
-        if (toggles_parity(eval.pieces[i], p)) inside = !inside;
-      if (inside) return m.components[c].component;
+        if (toggles_parity(e.pieces[i], p)) inside = !inside;
+      if (inside) return m.bounds[c].component;
       begin = end;
     }
     return -1;
@@ -605,8 +483,8 @@ struct SpaceQuery::Impl {
       QueryAnswer a;
       double best = std::numeric_limits<double>::infinity();
       int best_piece = -1;
-      for (size_t i = 0; i < eval.pieces.size(); ++i) {
-        const double d = distance_to_curve(eval.pieces[i], p);
+      for (size_t i = 0; i < eval.boundary.pieces.size(); ++i) {
+        const double d = distance_to_curve(eval.boundary.pieces[i], p);
         if (d < best) {
           best = d;
           best_piece = static_cast<int>(i);
@@ -614,7 +492,7 @@ struct SpaceQuery::Impl {
       }
       if (best_piece >= 0 && best <= pair.tol.contact) {
         a.placement = Placement::contact;
-        a.contact = m.labels[eval.piece_label[best_piece]];
+        a.contact = m.boundary.labels[eval.boundary.piece_label[best_piece]];
         return a;
       }
       a.component = locate_evaluated(m, p);

@@ -2,10 +2,6 @@
 // (in parallel with oneTBB), and the correspondence of contact segments between neighbours.
 #include "cslice/space.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 #include <atomic>
 
 #include <algorithm>
@@ -76,28 +72,76 @@ std::vector<Planned> plan_slices(const CriticalSet& criticals, double step) {
   return out;
 }
 
-// Each slice depends only on the pair and its theta and is stored at its own index, so the
-// result is the same whatever the number of threads or the order they run in.
+namespace {
+
+struct SlicerWorker {
+  explicit SlicerWorker(const Pair* pair) : slicer(*pair) {}
+  Slicer slicer;
+};
+
+}  // namespace
+
+SliceWorker::SliceWorker(const Pair* pair) : pair(*pair), slicer(*pair), contacts(*pair) {}
+
+Slice SliceWorker::slice(const BoundaryModel* model, double theta, bool& evaluated) {
+  std::optional<Slice> from_model;
+  if (model) from_model = slice_from_model(pair, *model, theta, contacts, scratch);
+  evaluated = from_model.has_value();
+  return evaluated ? std::move(*from_model) : slicer.slice(theta);
+}
+
+std::optional<BoundaryModel> checked_model(const Pair& pair, const Slice& representative) {
+  std::optional<BoundaryModel> model = model_boundary(representative, pair.tol);
+  if (model && !model_reproduces(*model, representative)) model.reset();
+  return model;
+}
+
+// Each slice depends only on the pair and its theta (an intermediate slice on its interval's
+// representative, itself computed from the pair and its theta) and is stored at its own
+// index, so the result is the same whatever the number of threads or the order they run in.
 void for_each_index_parallel(const Pair& pair, size_t count, int threads,
                              const std::function<void(size_t, Slicer&)>& slice_at) {
-  tbb::enumerable_thread_specific<Slicer> slicers([&] { return Slicer(pair); });
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  // Grain 1: slices differ widely in cost, so let the scheduler balance single slices.
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 1), [&](const auto& range) {
-      Slicer& slicer = slicers.local();
-      for (size_t i = range.begin(); i != range.end(); ++i) slice_at(i, slicer);
-    });
-  });
+  for_each_index_parallel<SlicerWorker>(pair, count, threads,
+                                        [&](size_t i, SlicerWorker& w) { slice_at(i, w.slicer); });
 }
 
 std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Planned>& plan,
-                                       int threads, const ProgressReport& progress) {
+                                       int threads, bool evaluate, const ProgressReport& progress) {
   std::vector<SpaceSlice> out(plan.size());
   std::atomic<size_t> done = 0;
-  for_each_index_parallel(pair, plan.size(), threads, [&](size_t i, Slicer& slicer) {
-    out[i] = {plan[i].theta, plan[i].kind, plan[i].interval, slicer.slice(plan[i].theta)};
+  const auto store = [&](size_t i, Slice slice, bool evaluated) {
+    out[i] = {plan[i].theta, plan[i].kind, plan[i].interval, std::move(slice), evaluated};
     if (progress) progress("slices", ++done, plan.size());
+  };
+  // Critical and representative slices first, from scratch; then per interval its
+  // intermediate ones.
+  std::vector<size_t> first;
+  std::vector<std::vector<size_t>> later;
+  std::vector<int> representative;
+  for (size_t i = 0; i < plan.size(); ++i) {
+    const size_t interval = static_cast<size_t>(plan[i].interval);
+    if (interval >= later.size()) {
+      later.resize(interval + 1);
+      representative.resize(interval + 1, -1);
+    }
+    if (plan[i].kind == SliceKind::interval) representative[interval] = static_cast<int>(i);
+    if (plan[i].kind == SliceKind::intermediate && evaluate)
+      later[interval].push_back(i);
+    else
+      first.push_back(i);
+  }
+  for_each_index_parallel(pair, first.size(), threads, [&](size_t k, Slicer& s) {
+    store(first[k], s.slice(plan[first[k]].theta), false);
+  });
+  for_each_index_parallel<SliceWorker>(pair, later.size(), threads, [&](size_t k, SliceWorker& w) {
+    if (later[k].empty()) return;
+    std::optional<BoundaryModel> model;
+    if (representative[k] >= 0) model = checked_model(pair, out[representative[k]].slice);
+    for (size_t i : later[k]) {
+      bool evaluated = false;
+      Slice slice = w.slice(model ? &*model : nullptr, plan[i].theta, evaluated);
+      store(i, std::move(slice), evaluated);
+    }
   });
   return out;
 }
@@ -184,10 +228,11 @@ SlicedSpace compute_space(const Pair& pair, const SpaceOptions& options) {
   space.reach = contact_reach(pair);
   space.max_step = interpolation_step(space.reach, pair.tol.contact);
   space.slices = detail::compute_slices(pair, detail::plan_slices(space.criticals, space.max_step),
-                                        options.threads, options.progress);
+                                        options.threads, options.evaluate_slices, options.progress);
   space.correspondence = detail::slice_correspondences(space.slices);
   report("topology", 0, 1);
-  space.topology = compute_topology(pair, space, {options.threads, options.verify_joins});
+  space.topology = compute_topology(
+      pair, space, {options.threads, options.verify_joins, options.evaluate_slices});
   report("topology", 1, 1);
   space.seconds_slices = seconds_since(start);
   return space;

@@ -197,6 +197,7 @@ json topology_json(const SpaceTopology& topo) {
             {"joins_by_count", k.joins_by_count},
             {"joins_by_clearance", k.joins_by_clearance},
             {"joins_by_carrying", k.joins_by_carrying},
+            {"side_slices_evaluated", k.side_slices_evaluated},
             {"orphan_critical_components", k.orphan_critical_components},
             {"refinement_slices", k.refinement_slices},
             {"label_matches", k.label_matches},

@@ -62,8 +62,9 @@ class TopologyBuilder {
   // One slice of an interval's chain: a stored slice or a side slice.
   struct Link {
     const Slice* slice = nullptr;
-    int stored = -1;     // index into space.slices, or -1 for a side or refinement slice
-    int first_node = 0;  // node of its component 0
+    int stored = -1;         // index into space.slices, or -1 for a side or refinement slice
+    int first_node = 0;      // node of its component 0
+    bool evaluated = false;  // a side slice evaluated from the representative's structure
   };
 
   void problem(const std::string& text) {
@@ -132,10 +133,30 @@ class TopologyBuilder {
     topo_.checks.joins_by_clearance =
         static_cast<int>(std::count(far_.begin(), far_.end(), char{1}));
     sides_.resize(thetas.size());
-    detail::for_each_index_parallel(pair_, thetas.size(), options_.threads,
-                                    [&](size_t i, Slicer& s) {
-                                      if (has_side_[i]) sides_[i] = s.slice(thetas[i]);
-                                    });
+    side_evaluated_.assign(thetas.size(), 0);
+    detail::for_each_index_parallel<detail::SliceWorker>(
+        pair_, thetas.size(), options_.threads, [&](size_t i, detail::SliceWorker& w) {
+          if (!has_side_[i]) return;
+          std::optional<BoundaryModel> model = side_model(static_cast<int>(i));
+          bool evaluated = false;
+          sides_[i] = w.slice(model ? &*model : nullptr, thetas[i], evaluated);
+          side_evaluated_[i] = evaluated;
+        });
+    topo_.checks.side_slices_evaluated =
+        static_cast<int>(std::count(side_evaluated_.begin(), side_evaluated_.end(), char{1}));
+  }
+
+  // A side slice lies inside its interval, so its representative's boundary model, where it
+  // holds, gives it at a fraction of the cost. Not when verifying joins: then each side
+  // slice is computed from scratch and checked against the representative, a check of the
+  // critical orientations.
+  std::optional<BoundaryModel> side_model(int side) const {
+    const int n = static_cast<int>(criticals_.size());
+    const int k = side / 2;
+    const int interval = side % 2 == 0 ? (k + n - 1) % n : k;
+    if (options_.verify_joins || !options_.evaluate_slices || representative_[interval] < 0)
+      return std::nullopt;
+    return detail::checked_model(pair_, space_.slices[representative_[interval]].slice);
   }
 
   // Whether stored slice `stored`, `gap` from critical orientation k, can stand in for a side
@@ -190,14 +211,15 @@ class TopologyBuilder {
     const int crit = static_cast<int>(criticals_.size());
     chains_.assign(n, {});
     int nodes = 0;
-    const auto add = [&](int i, const Slice* s, int stored) {
-      chains_[i].push_back({s, stored, nodes});
+    const auto add = [&](int i, const Slice* s, int stored, bool evaluated) {
+      chains_[i].push_back({s, stored, nodes, evaluated});
       nodes += component_count(*s);
     };
     for (int i = 0; i < n; ++i) {
-      if (crit > 0 && has_side_[2 * i + 1]) add(i, &sides_[2 * i + 1], -1);
-      for (int s : stored_[i]) add(i, &space_.slices[s].slice, s);
-      if (crit > 0 && has_side_[2 * ((i + 1) % crit)]) add(i, &sides_[2 * ((i + 1) % crit)], -2);
+      const int first = 2 * i + 1, last = 2 * ((i + 1) % std::max(crit, 1));
+      if (crit > 0 && has_side_[first]) add(i, &sides_[first], -1, side_evaluated_[first]);
+      for (int s : stored_[i]) add(i, &space_.slices[s].slice, s, false);
+      if (crit > 0 && has_side_[last]) add(i, &sides_[last], -2, side_evaluated_[last]);
     }
     nodes_ = UnionFind(nodes);
     refined_links_.assign(n, {});
@@ -208,7 +230,8 @@ class TopologyBuilder {
       if (crit == 0 && chain.size() > 1) match(i, chain.back(), chain.front());
       if (crit > 0 && representative_[i] >= 0)
         for (const Link& side : {chain.front(), chain.back()}) {
-          if (side.stored >= 0) continue;
+          // An evaluated side slice has the representative's structure by construction.
+          if (side.stored >= 0 || side.evaluated) continue;
           const EquivalenceResult e =
               slices_equivalent(*side.slice, space_.slices[representative_[i]].slice);
           if (!e.equivalent) {
@@ -638,7 +661,8 @@ class TopologyBuilder {
   std::optional<Slicer> slicer_;          // for carrying samples across critical orientations
   std::vector<std::vector<int>> stored_;  // per interval: its non-critical slices, by theta
   std::vector<int> critical_slice_, representative_;
-  std::vector<Slice> sides_;  // 2k: before critical k, 2k + 1: after it
+  std::vector<Slice> sides_;          // 2k: before critical k, 2k + 1: after it
+  std::vector<char> side_evaluated_;  // per side: evaluated from its interval's model
   std::vector<std::vector<Link>> chains_;
   std::deque<Slice> refined_;      // extra slices halving unmatched gaps (stable addresses)
   std::optional<Slicer> refiner_;  // computes them, built on first use

@@ -9,7 +9,8 @@
 // outside the contact tolerance band, its contact mesh closed (every edge shared by two
 // triangles once each way, nothing coned or joined straight), and the 3D topology's joins at
 // every critical orientation against components carried across it, both ways: no join
-// missed, none unconfirmed (tests/support/crossings). A
+// missed, none unconfirmed (tests/support/crossings); slices evaluated from their interval's
+// structure against the same computed from scratch and classify. A
 // failing pair is printed (its file, or its JSON for a seed) and the exit status is 1. Not run by
 // ctest: a few hundred pairs take minutes.
 #include <gtest/gtest.h>
@@ -74,6 +75,16 @@ bool check_pair(const Pair& pair, unsigned seed, const std::string& name) {
   const size_t n = set.orientations.size(), step = std::max<size_t>(1, n / 40);
   for (size_t i = 0; i < n; i += step)
     testkit::check_slice_against_classify(pair, set.orientations[i].theta, 40, rng, name, false);
+  // Up to 20 slices evaluated from their interval's structure, evenly spread, against the
+  // same slices computed from scratch and beside their boundaries against classify.
+  std::vector<const SpaceSlice*> evaluated;
+  for (const SpaceSlice& s : space.slices)
+    if (s.evaluated) evaluated.push_back(&s);
+  for (size_t i = 0; i < evaluated.size(); i += std::max<size_t>(1, evaluated.size() / 20)) {
+    const Slice& s = evaluated[i]->slice;
+    testkit::expect_same_slice(pair, s, compute_slice(pair, s.theta), name);
+    testkit::expect_boundary_sides_agree_with_classify(pair, s, name);
+  }
   check_queries(pair, space, seed, name);
   check_mesh(pair, space, name);
   for (int at = 0; at < static_cast<int>(space.slices.size()); ++at)

@@ -5,7 +5,7 @@
 #include <random>
 #include <string>
 
-#include "cslice/pair.hpp"
+#include "cslice/slice.hpp"
 
 namespace cslice::testkit {
 
@@ -17,5 +17,23 @@ namespace cslice::testkit {
 // time quadratic in the parts' sizes: large pairs may skip it.
 int check_slice_against_classify(const Pair& pair, double theta, int points, std::mt19937& rng,
                                  const std::string& what, bool sample_clearance = true);
+
+// The same checks on a slice already made (a stored slice of a sliced space).
+int check_slice_against_classify(const Pair& pair, const Slice& slice, int points,
+                                 std::mt19937& rng, const std::string& what,
+                                 bool sample_clearance = true);
+
+// A slice made another way (evaluated from a boundary model) against the slice computed from
+// scratch at its theta: the same contact segments, the free components matched through
+// their samples both ways with the same boundedness and area, the same realizable labels,
+// contact graph (by label) and blocked area. Pieces and components may come in another order.
+void expect_same_slice(const Pair& pair, const Slice& other, const Slice& computed,
+                       const std::string& what);
+
+// Just beside the middle of every boundary piece, classify sees free space on the
+// component's side (the piece's left) and blocked space on the other, where no other piece
+// comes near: the boundary lies where contact really is. Returns the sides tested.
+int expect_boundary_sides_agree_with_classify(const Pair& pair, const Slice& slice,
+                                              const std::string& what);
 
 }  // namespace cslice::testkit
