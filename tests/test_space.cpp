@@ -296,6 +296,25 @@ TEST_F(SpaceCli, ThreadCountChangesOnlyTheTiming) {
   EXPECT_EQ(ja.dump(), jb.dump());
 }
 
+// --from-scratch computes every slice (none evaluated from its interval's structure): the
+// same slices by their summaries and the same topology; only the count of evaluated side
+// slices tells them apart.
+TEST_F(SpaceCli, FromScratchGivesTheSameSpace) {
+  const std::string a = (dir_ / "evaluated.json").string(), b = (dir_ / "scratch.json").string();
+  ASSERT_EQ(compute(testkit::example_path("fastener"), a).status, 0);
+  ASSERT_EQ(compute(testkit::example_path("fastener"), b, "--from-scratch").status, 0);
+  nlohmann::json ja = nlohmann::json::parse(testkit::read_file(a));
+  nlohmann::json jb = nlohmann::json::parse(testkit::read_file(b));
+  EXPECT_GT(ja["topology"]["checks"]["side_slices_evaluated"].get<int>(), 0);
+  EXPECT_EQ(jb["topology"]["checks"]["side_slices_evaluated"].get<int>(), 0);
+  for (const char* key : {"transitions", "components", "slice_components"})
+    EXPECT_EQ(ja["topology"][key], jb["topology"][key]) << key;
+  ASSERT_EQ(ja["slices"].size(), jb["slices"].size());
+  for (size_t i = 0; i < ja["slices"].size(); ++i)
+    for (const char* key : {"free_components", "realizable_labels", "contact_graph_edges"})
+      EXPECT_EQ(ja["slices"][i][key], jb["slices"][i][key]) << "slice " << i << " " << key;
+}
+
 TEST_F(SpaceCli, ProgressShowsOnATerminalOnly) {
   const std::string out = (dir_ / "space.json").string();
   const testkit::RunResult piped = compute(testkit::example_path("cam"), out);

@@ -1,5 +1,6 @@
-// `cslice compute PAIR.json -o SPACE.json [--threads N] [--verify-joins]`: the sliced configuration
-// space of a pair (critical orientations, slices, correspondence), as JSON (docs/space-format.md).
+// `cslice compute PAIR.json -o SPACE.json [--threads N] [--verify-joins] [--from-scratch]`: the
+// sliced configuration space of a pair (critical orientations, slices, correspondence), as JSON
+// (docs/space-format.md).
 #include <memory>
 #include <optional>
 
@@ -16,6 +17,7 @@ struct ComputeCommand {
   std::string out_path;
   int threads = 0;
   bool verify_joins = false;
+  bool from_scratch = false;
 };
 
 void run(const ComputeCommand& cmd) {
@@ -24,6 +26,7 @@ void run(const ComputeCommand& cmd) {
   SpaceOptions options;
   options.threads = cmd.threads;
   options.verify_joins = cmd.verify_joins;
+  options.evaluate_slices = !cmd.from_scratch;
   std::optional<ProgressLine> progress(std::in_place, "cslice compute");
   options.progress = progress->report();
   const SlicedSpace space = compute_space(pair, options);
@@ -48,6 +51,9 @@ void register_compute(CLI::App& app) {
   sub->add_flag("--verify-joins", cmd->verify_joins,
                 "Side slices at every critical orientation, each checked against its interval,\n"
                 "even where the free-component counts decide the joins (slower; same result)");
+  sub->add_flag("--from-scratch", cmd->from_scratch,
+                "Every slice computed from scratch, none evaluated from its interval's\n"
+                "representative (slower; the same result to round-off)");
   sub->callback([cmd] { run(*cmd); });
 }
 
