@@ -22,27 +22,31 @@ bool sorted_hits(const Curve& a, const Curve& b, double eps, SortedHits& hits) {
   return true;
 }
 
-namespace {
-
-// The label index of a contact segment's feature pair, added when new.
-int label_index(BoundaryModel& m, const ContactSegment& s) {
-  const SegmentLabel l{s.moving_feature, s.fixed_feature};
-  const auto it = std::find(m.labels.begin(), m.labels.end(), l);
-  if (it != m.labels.end()) return static_cast<int>(it - m.labels.begin());
-  m.labels.push_back(l);
-  return static_cast<int>(m.labels.size()) - 1;
+int label_index(const BoundaryModel& model, SegmentLabel l) {
+  const auto it = std::lower_bound(
+      model.by_label.begin(), model.by_label.end(), l,
+      [](const std::pair<SegmentLabel, int>& e, const SegmentLabel& k) { return e.first < k; });
+  return it != model.by_label.end() && it->first == l ? it->second : -1;
 }
 
+namespace {
+
 // Labels and pieces of every cycle, without corners; false on a full circle sharing its
-// cycle or an empty cycle.
+// cycle, an empty cycle, or two contact segments of one label on the boundary.
 bool model_cycles(const Slice& slice, BoundaryModel& m) {
+  std::vector<int> label_of_segment(slice.contact_segments.size(), -1);
   for (const FreeComponent& fc : slice.free_components) {
     ComponentModel& cm = m.components.emplace_back();
     cm.bounded = fc.bounded;
     for (const auto& cycle : fc.boundary) {
       CycleModel& cyc = cm.cycles.emplace_back();
       for (const ContactPiece& piece : cycle) {
-        const int label = label_index(m, slice.contact_segments.at(piece.segment));
+        int& label = label_of_segment.at(piece.segment);
+        if (label < 0) {
+          const ContactSegment& s = slice.contact_segments[piece.segment];
+          label = static_cast<int>(m.labels.size());
+          m.labels.push_back({s.moving_feature, s.fixed_feature});
+        }
         const int sign = piece.curve.is_arc() ? (piece.curve.sweep > 0 ? 1 : -1) : 0;
         cyc.pieces.push_back({label, sign});
         cyc.full_circle = cyc.full_circle || piece.curve.is_full_circle();
@@ -50,7 +54,11 @@ bool model_cycles(const Slice& slice, BoundaryModel& m) {
       if (cyc.pieces.empty() || (cyc.full_circle && cyc.pieces.size() != 1)) return false;
     }
   }
-  return true;
+  for (int l = 0; l < static_cast<int>(m.labels.size()); ++l)
+    m.by_label.push_back({m.labels[l], l});
+  std::sort(m.by_label.begin(), m.by_label.end());
+  const auto same = [](const auto& x, const auto& y) { return x.first == y.first; };
+  return std::adjacent_find(m.by_label.begin(), m.by_label.end(), same) == m.by_label.end();
 }
 
 // The contact curve of each label in the slice; false unless each label has exactly one
@@ -59,10 +67,8 @@ bool label_curves(const Slice& slice, const BoundaryModel& m, std::vector<Curve>
   std::vector<int> found(m.labels.size(), 0);
   curves.assign(m.labels.size(), Curve{});
   for (const ContactSegment& s : slice.contact_segments) {
-    const auto it = std::find(m.labels.begin(), m.labels.end(),
-                              SegmentLabel{s.moving_feature, s.fixed_feature});
-    if (it == m.labels.end()) continue;
-    const size_t l = it - m.labels.begin();
+    const int l = label_index(m, {s.moving_feature, s.fixed_feature});
+    if (l < 0) continue;
     if (s.is_point || ++found[l] > 1) return false;
     curves[l] = s.curve;
   }
@@ -171,22 +177,15 @@ namespace {
 // one there, or when any contact segment is a point (a perfect fit the model cannot hold).
 bool find_label_segments(const BoundaryModel& model, const std::vector<ContactSegment>& segments,
                          SliceFromModelScratch& s) {
-  s.sorted_labels.clear();
-  for (int l = 0; l < static_cast<int>(model.labels.size()); ++l)
-    s.sorted_labels.push_back({model.labels[l], l});
-  std::sort(s.sorted_labels.begin(), s.sorted_labels.end());
   s.label_segment.assign(model.labels.size(), -1);
   s.curves.resize(model.labels.size());
   for (const ContactSegment& seg : segments) {
     if (seg.is_point) return false;
-    const SegmentLabel key{seg.moving_feature, seg.fixed_feature};
-    const auto it = std::lower_bound(
-        s.sorted_labels.begin(), s.sorted_labels.end(), key,
-        [](const std::pair<SegmentLabel, int>& e, const SegmentLabel& k) { return e.first < k; });
-    if (it == s.sorted_labels.end() || it->first != key) continue;
-    if (s.label_segment[it->second] >= 0) return false;
-    s.label_segment[it->second] = seg.id;
-    s.curves[it->second] = seg.curve;
+    const int l = label_index(model, {seg.moving_feature, seg.fixed_feature});
+    if (l < 0) continue;
+    if (s.label_segment[l] >= 0) return false;
+    s.label_segment[l] = seg.id;
+    s.curves[l] = seg.curve;
   }
   return std::none_of(s.label_segment.begin(), s.label_segment.end(),
                       [](int id) { return id < 0; });
@@ -282,9 +281,8 @@ bool model_reproduces(const BoundaryModel& model, const Slice& slice) {
   if (!slice.degenerate.empty()) return false;
   std::vector<int> ids(model.labels.size(), -1);
   for (const ContactSegment& s : slice.contact_segments) {
-    const auto it = std::find(model.labels.begin(), model.labels.end(),
-                              SegmentLabel{s.moving_feature, s.fixed_feature});
-    if (it != model.labels.end()) ids[it - model.labels.begin()] = s.id;
+    const int l = label_index(model, {s.moving_feature, s.fixed_feature});
+    if (l >= 0) ids[l] = s.id;
   }
   std::vector<std::pair<int, int>> edges;
   size_t pieces = 0;

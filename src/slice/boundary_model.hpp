@@ -44,9 +44,14 @@ struct ComponentModel {
 
 struct BoundaryModel {
   std::vector<SegmentLabel> labels;
-  std::vector<ComponentModel> components;  // in the slice's order
+  std::vector<std::pair<SegmentLabel, int>> by_label;  // (label, its index), sorted
+  std::vector<ComponentModel> components;              // in the slice's order
   int corners = 0;
 };
+
+// The index of label l in the model, or -1 (a binary search: models of big slices have
+// thousands of labels).
+int label_index(const BoundaryModel& model, SegmentLabel l);
 
 // Transversal hits of two curves, sorted along the first.
 using SortedHits = std::vector<std::pair<double, Vec2>>;
@@ -90,7 +95,6 @@ struct SliceFromModelScratch {
   EvaluatedBoundary boundary;
   std::vector<Curve> curves, cycle;
   std::vector<int> label_segment;
-  std::vector<std::pair<SegmentLabel, int>> sorted_labels;
   std::vector<double> xs;
 };
 
