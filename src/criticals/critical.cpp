@@ -212,11 +212,13 @@ class Worker {
 
   // ---- Validation: the configuration lies on the contact segments --------------------
 
-  const std::vector<ContactSegment>& segments_of(int family, double theta,
+  // The family's contact segments at the orientation `turn` rotates by (one rotation serves
+  // every family a candidate involves).
+  const std::vector<ContactSegment>& segments_of(int family, const Transform& turn,
                                                  std::vector<ContactSegment>& out) const {
     out.clear();
     const ContactFamily& f = ctx_.families[family];
-    add_pair_contacts(ctx_.pair, ctx_.moving[f.moving], ctx_.fixed[f.fixed], theta, out);
+    add_pair_contacts(ctx_.pair, ctx_.moving[f.moving], ctx_.fixed[f.fixed], turn, out);
     return out;
   }
 
@@ -233,13 +235,14 @@ class Worker {
     if (!memo_used_ || std::bit_cast<std::uint64_t>(theta) != memo_theta_) {
       memo_used_ = true;
       memo_theta_ = std::bit_cast<std::uint64_t>(theta);
+      memo_turn_ = Transform(Pose{0.0, 0.0, theta});
       if (++memo_now_ == 0) {  // wrapped: no stale stamp may match
         std::fill(memo_stamp_.begin(), memo_stamp_.end(), 0u);
         memo_now_ = 1;
       }
     }
     if (memo_stamp_[family] != memo_now_) {
-      segments_of(family, theta, memo_[family]);
+      segments_of(family, memo_turn_, memo_[family]);
       memo_stamp_[family] = memo_now_;
     }
     return memo_[family];
@@ -251,10 +254,10 @@ class Worker {
     bool on_segment = false;
     bool at_end = false;
   };
-  Nearness nearness(int family, double theta, Vec2 x) {
+  Nearness nearness(int family, const Transform& turn, Vec2 x) {
     Nearness n;
     const double tol = ctx_.pair.tol.criticality;
-    for (const ContactSegment& s : segments_of(family, theta, scratch_)) {
+    for (const ContactSegment& s : segments_of(family, turn, scratch_)) {
       n.on_segment |= distance_to_curve(s.curve, x) <= tol;
       n.at_end |= std::min(distance(s.curve.from, x), distance(s.curve.to, x)) <= tol;
     }
@@ -272,14 +275,16 @@ class Worker {
     if (!all_alive({a, b}, theta)) return reject();
     const Vec2 x = ctx_.families[a].ends[end].at(theta);
     // Both must hold; the end lying off b's segment is the common failure, so it goes first.
-    if (!nearness(b, theta, x).on_segment || !nearness(a, theta, x).at_end) return reject();
+    const Transform turn(Pose{0.0, 0.0, theta});
+    if (!nearness(b, turn, x).on_segment || !nearness(a, turn, x).at_end) return reject();
     found.push_back({CriticalCondition::endpoint, {a, b, -1}, 2, theta, x});
   }
 
   void add_tangent(int a, int b, double theta) {
     if (!all_alive({a, b}, theta)) return reject();
     const Vec2 x = tangent_point(ctx_.equations[a], ctx_.equations[b], theta);
-    if (!nearness(a, theta, x).on_segment || !nearness(b, theta, x).on_segment) return reject();
+    const Transform turn(Pose{0.0, 0.0, theta});
+    if (!nearness(a, turn, x).on_segment || !nearness(b, turn, x).on_segment) return reject();
     found.push_back({CriticalCondition::tangent, {a, b, -1}, 2, theta, x});
   }
 
@@ -292,8 +297,9 @@ class Worker {
     // (better conditioned) equation finds; the triple equation there is near-degenerate
     // when two of the curves always share that end.
     bool at_an_end = false;
+    const Transform turn(Pose{0.0, 0.0, theta});
     for (int f : {a, b, c}) {
-      const Nearness n = nearness(f, theta, *x);
+      const Nearness n = nearness(f, turn, *x);
       if (!n.on_segment) return reject();
       at_an_end |= n.at_end;
     }
@@ -400,6 +406,7 @@ class Worker {
   std::vector<unsigned> memo_stamp_;               // memo_now_ when memo_[f] was built
   unsigned memo_now_ = 0;
   std::uint64_t memo_theta_ = 0;
+  Transform memo_turn_;  // the rotation by memo_theta_
   bool memo_used_ = false;
   std::vector<double> near_;              // roots()
   std::vector<Vec2> probes_;              // the probes of one candidate (reaches_free)
