@@ -35,50 +35,26 @@ void run_space(benchmark::State& state, const std::string& name, bool evaluate) 
       benchmark::Counter(1e3 * criticals_seconds, benchmark::Counter::kAvgIterations);
 }
 
-void BM_Space(benchmark::State& state, const std::string& name) {
-  run_space(state, name, true);
-}
-
-void BM_SpaceFromScratch(benchmark::State& state, const std::string& name) {
-  run_space(state, name, false);
+// Every example evaluated on one and two threads, then from scratch on one, in that order.
+void register_benchmarks() {
+  const char* const examples[] = {"knee", "cam", "fixture", "fastener"};
+  for (const bool evaluate : {true, false})
+    for (const char* name : examples) {
+      const std::string title = std::string(evaluate ? "BM_Space/" : "BM_SpaceFromScratch/") + name;
+      benchmark::internal::Benchmark* b = benchmark::RegisterBenchmark(
+          title.c_str(), [=](benchmark::State& state) { run_space(state, name, evaluate); });
+      b->ArgName("threads")->Arg(1)->Unit(benchmark::kMillisecond);
+      if (evaluate) b->Arg(2);
+    }
 }
 
 }  // namespace
 
-BENCHMARK_CAPTURE(BM_Space, knee, std::string("knee"))
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Space, cam, std::string("cam"))
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Space, fixture, std::string("fixture"))
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Space, fastener, std::string("fastener"))
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SpaceFromScratch, knee, std::string("knee"))
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SpaceFromScratch, cam, std::string("cam"))
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SpaceFromScratch, fixture, std::string("fixture"))
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SpaceFromScratch, fastener, std::string("fastener"))
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  register_benchmarks();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
