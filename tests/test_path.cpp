@@ -289,30 +289,6 @@ TEST(Path, RandomQueriesOnRandomCurvedPairs) {
   EXPECT_GT(all.crossed, 20);
 }
 
-// A moving part in an opening (an enclosure) or a hole it barely fits, like the cam in its
-// follower: free space in narrow, turning channels, split into components and pinched at
-// critical orientations. A pinch narrower than twice the contact tolerance has no free path
-// through it although the point query joins both sides (status not_found), so here only most
-// queries must find a path, and every path found must be valid.
-Pair tight_pair(std::mt19937& rng, int k) {
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  for (;;) {
-    testkit::RandomLoopOptions m{4 + k % 4, 1.0, 0.3, 0.5, 0.3, {0.0, 0.0}};
-    testkit::RandomLoopOptions h{5 + k % 3, 1.15 + 0.4 * u(rng), 0.15, 0.5, 0.25, {0.0, 0.0}};
-    std::string json = R"({"name":"tight","moving":{"loops":[)";
-    json += testkit::random_loop_json(rng, m);
-    json += k % 2 == 0 ? R"(]},"fixed":{"enclosure":true,"loops":[)"
-                       : R"(]},"fixed":{"loops":[[[-4,-4],[4,-4],[4,4],[-4,4]],)";
-    json += testkit::random_loop_json(rng, h);
-    json += "]}}";
-    LoadResult r = parse_pair(json, "tight");
-    if (!r.ok()) continue;
-    const SlicedSpace space = space_of(*r.pair);
-    for (const SpaceSlice& s : space.slices)
-      if (!s.slice.free_components.empty()) return std::move(*r.pair);
-  }
-}
-
 // A square in a square opening 0.001 wider: free space everywhere thinner than twice the
 // contact tolerance, so no random end can be drawn. The helper gives up (it used to loop
 // for ever on such a tight pair, as random seed 4711 of the tight fits above draws one).
@@ -329,11 +305,16 @@ TEST(Path, RandomFreePoseGivesUpOnATightFit) {
   EXPECT_FALSE(testkit::random_free_pose(*r.pair, rng).has_value());
 }
 
+// Random tight fits (testkit::tight_pair): a moving part in an opening or a hole it barely fits,
+// like the cam in its follower: free space in narrow, turning channels, split into components and
+// pinched at critical orientations. A pinch narrower than twice the contact tolerance has no free
+// path through it although the point query joins both sides (status not_found), so here only most
+// queries must find a path, and every path found must be valid.
 TEST(Path, RandomTightFits) {
   std::mt19937 rng(5);
   Checked all;
   for (int k = 0; k < 10; ++k) {
-    const Pair pair = tight_pair(rng, k);
+    const Pair pair = testkit::tight_pair(rng, k);
     const SlicedSpace space = space_of(pair);
     const Checked c =
         random_queries(pair, space, 10, 500 + k, "tight pair " + std::to_string(k), false);

@@ -112,6 +112,20 @@ TEST(EvaluatedSlices, RandomCurvedPairsMatchSlicesComputedFromScratch) {
   EXPECT_GT(evaluated, intermediates * 3 / 4) << evaluated << " of " << intermediates;
 }
 
+// Tight fits (a part in an opening it barely fits): thin, pinched free space, corners close
+// together. Where a model holds the evaluated slices are the computed ones.
+TEST(EvaluatedSlices, TightFitsMatchSlicesComputedFromScratch) {
+  std::mt19937 rng(5);
+  int evaluated = 0, intermediates = 0;
+  for (int k = 0; k < 10; ++k) {
+    const Pair pair = testkit::tight_pair(rng, k);
+    int n = 0;
+    evaluated += compare_spaces(pair, "tight pair " + std::to_string(k), n);
+    intermediates += n;
+  }
+  EXPECT_GT(evaluated, intermediates / 2) << evaluated << " of " << intermediates;
+}
+
 // The evaluated slices pass the slice tests' own oracle (samples free, membership as classify
 // says at random points) and classify finds their boundary pieces where contact is.
 TEST(EvaluatedSlices, AgreeWithClassify) {

@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "cslice/space.hpp"
+
 namespace cslice::testkit {
 
 std::string random_loop_json(std::mt19937& rng, const RandomLoopOptions& o) {
@@ -45,6 +47,27 @@ RandomPair random_pair(std::mt19937& rng, int moving_vertices, int fixed_vertice
 RandomPair stress_pair(unsigned seed) {
   std::mt19937 rng(seed);
   return random_pair(rng, 3 + int(seed % 6), 4 + int(seed / 7 % 8), seed % 3 == 0);
+}
+
+Pair tight_pair(std::mt19937& rng, int k) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (;;) {
+    RandomLoopOptions m{4 + k % 4, 1.0, 0.3, 0.5, 0.3, {0.0, 0.0}};
+    RandomLoopOptions h{5 + k % 3, 1.15 + 0.4 * u(rng), 0.15, 0.5, 0.25, {0.0, 0.0}};
+    std::string json = R"({"name":"tight","moving":{"loops":[)";
+    json += random_loop_json(rng, m);
+    json += k % 2 == 0 ? R"(]},"fixed":{"enclosure":true,"loops":[)"
+                       : R"(]},"fixed":{"loops":[[[-4,-4],[4,-4],[4,4],[-4,4]],)";
+    json += random_loop_json(rng, h);
+    json += "]}}";
+    LoadResult r = parse_pair(json, "tight");
+    if (!r.ok()) continue;
+    SpaceOptions options;
+    options.threads = 2;
+    const SlicedSpace space = compute_space(*r.pair, options);
+    for (const SpaceSlice& s : space.slices)
+      if (!s.slice.free_components.empty()) return std::move(*r.pair);
+  }
 }
 
 }  // namespace cslice::testkit

@@ -35,4 +35,9 @@ RandomPair random_pair(std::mt19937& rng, int moving_vertices, int fixed_vertice
 // of stress runs' failures by it.
 RandomPair stress_pair(unsigned seed);
 
+// A tight fit, number k of a series drawn from rng: a random star-shaped moving part (4 to 7
+// vertices) in a star-shaped opening of an enclosure (even k) or a hole in a square (odd k)
+// 1.15 to 1.55 times its size, drawn again until some slice has free space.
+Pair tight_pair(std::mt19937& rng, int k);
+
 }  // namespace cslice::testkit
