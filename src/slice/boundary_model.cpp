@@ -253,7 +253,8 @@ void add_contact_graph(const BoundaryModel& model, SliceFromModelScratch& s, Sli
 
 std::optional<Slice> slice_from_model(const Pair& pair, const BoundaryModel& model, double theta,
                                       ContactMaker& contacts, SliceFromModelScratch& scratch) {
-  if (model.components.empty()) return std::nullopt;
+  // A model with no component (an interval with no free space at all) evaluates to no
+  // free space: the structure holds throughout the interval like any other.
   Slice slice;
   slice.theta = theta;
   slice.epsilon = pair.tol.geometric;
