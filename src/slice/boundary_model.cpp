@@ -29,6 +29,20 @@ int label_index(const BoundaryModel& model, SegmentLabel l) {
   return it != model.by_label.end() && it->first == l ? it->second : -1;
 }
 
+bool label_segments(const BoundaryModel& model, std::span<const ContactSegment> segments,
+                    std::vector<int>& ids, std::vector<Curve>& curves) {
+  ids.assign(model.labels.size(), -1);
+  curves.resize(model.labels.size());
+  for (const ContactSegment& s : segments) {
+    const int l = label_index(model, {s.moving_feature, s.fixed_feature});
+    if (l < 0) continue;
+    if (s.is_point || ids[l] >= 0) return false;
+    ids[l] = s.id;
+    curves[l] = s.curve;
+  }
+  return std::none_of(ids.begin(), ids.end(), [](int id) { return id < 0; });
+}
+
 namespace {
 
 // Labels and pieces of every cycle, without corners; false on a full circle sharing its
@@ -59,20 +73,6 @@ bool model_cycles(const Slice& slice, BoundaryModel& m) {
   std::sort(m.by_label.begin(), m.by_label.end());
   const auto same = [](const auto& x, const auto& y) { return x.first == y.first; };
   return std::adjacent_find(m.by_label.begin(), m.by_label.end(), same) == m.by_label.end();
-}
-
-// The contact curve of each label in the slice; false unless each label has exactly one
-// contact segment there, not a point.
-bool label_curves(const Slice& slice, const BoundaryModel& m, std::vector<Curve>& curves) {
-  std::vector<int> found(m.labels.size(), 0);
-  curves.assign(m.labels.size(), Curve{});
-  for (const ContactSegment& s : slice.contact_segments) {
-    const int l = label_index(m, {s.moving_feature, s.fixed_feature});
-    if (l < 0) continue;
-    if (s.is_point || ++found[l] > 1) return false;
-    curves[l] = s.curve;
-  }
-  return std::all_of(found.begin(), found.end(), [](int n) { return n == 1; });
 }
 
 // Each corner's rank among the hits of its curves: the hit nearest the slice's corner, which
@@ -107,8 +107,9 @@ bool model_corners(const Slice& slice, const std::vector<Curve>& curves, const T
 std::optional<BoundaryModel> model_boundary(const Slice& slice, const Tolerances& tol) {
   if (!slice.degenerate.empty()) return std::nullopt;
   BoundaryModel m;
+  std::vector<int> ids;
   std::vector<Curve> curves;
-  if (!model_cycles(slice, m) || !label_curves(slice, m, curves) ||
+  if (!model_cycles(slice, m) || !label_segments(m, slice.contact_segments, ids, curves) ||
       !model_corners(slice, curves, tol, m))
     return std::nullopt;
   return m;
@@ -173,29 +174,12 @@ bool evaluate_boundary(const BoundaryModel& model, std::span<const Curve> curves
 
 namespace {
 
-// Each label's contact segment id and curve at theta; false unless each label has exactly
-// one there, or when any contact segment is a point (a perfect fit the model cannot hold).
-bool find_label_segments(const BoundaryModel& model, const std::vector<ContactSegment>& segments,
-                         SliceFromModelScratch& s) {
-  s.label_segment.assign(model.labels.size(), -1);
-  s.curves.resize(model.labels.size());
-  for (const ContactSegment& seg : segments) {
-    if (seg.is_point) return false;
-    const int l = label_index(model, {seg.moving_feature, seg.fixed_feature});
-    if (l < 0) continue;
-    if (s.label_segment[l] >= 0) return false;
-    s.label_segment[l] = seg.id;
-    s.curves[l] = seg.curve;
-  }
-  return std::none_of(s.label_segment.begin(), s.label_segment.end(),
-                      [](int id) { return id < 0; });
-}
-
 // Free components, realizable pieces and blocked area from the evaluated boundary.
 void add_components(const Pair& pair, const BoundaryModel& model, SliceFromModelScratch& s,
                     Slice& slice) {
   const EvaluatedBoundary& e = s.boundary;
-  double enclosed = 0.0, free_bounded = 0.0;  // by the unbounded component's cycles
+  // Blocked space: what the unbounded component's cycles enclose, less the bounded components.
+  double enclosed = 0.0, free_bounded = 0.0;
   slice.realizable.reserve(e.pieces.size());
   int cycle = 0, piece = 0;
   for (size_t c = 0; c < model.components.size(); ++c) {
@@ -259,7 +243,11 @@ std::optional<Slice> slice_from_model(const Pair& pair, const BoundaryModel& mod
   slice.theta = theta;
   slice.epsilon = pair.tol.geometric;
   contacts.segments(theta, slice.contact_segments);
-  if (!find_label_segments(model, slice.contact_segments, scratch) ||
+  // Any perfect fit refuses, not only the labels' own: a computed slice would make it a
+  // degenerate contact wherever it is free, which the model cannot tell.
+  const auto point = [](const ContactSegment& c) { return c.is_point; };
+  if (std::any_of(slice.contact_segments.begin(), slice.contact_segments.end(), point) ||
+      !label_segments(model, slice.contact_segments, scratch.label_segment, scratch.curves) ||
       !evaluate_boundary(model, scratch.curves, pair.tol.geometric, scratch.boundary))
     return std::nullopt;
   add_components(pair, model, scratch, slice);
@@ -280,11 +268,9 @@ std::vector<std::pair<int, int>> edge_pairs(const ContactGraph& g) {
 
 bool model_reproduces(const BoundaryModel& model, const Slice& slice) {
   if (!slice.degenerate.empty()) return false;
-  std::vector<int> ids(model.labels.size(), -1);
-  for (const ContactSegment& s : slice.contact_segments) {
-    const int l = label_index(model, {s.moving_feature, s.fixed_feature});
-    if (l >= 0) ids[l] = s.id;
-  }
+  std::vector<int> ids;
+  std::vector<Curve> curves;
+  if (!label_segments(model, slice.contact_segments, ids, curves)) return false;
   std::vector<std::pair<int, int>> edges;
   size_t pieces = 0;
   for (const ComponentModel& cm : model.components)

@@ -53,6 +53,11 @@ struct BoundaryModel {
 // thousands of labels).
 int label_index(const BoundaryModel& model, SegmentLabel l);
 
+// Each label's contact segment among `segments` (one slice's): its id into ids[l] and its curve
+// into curves[l]; false unless every label has exactly one, and none of them is a point.
+bool label_segments(const BoundaryModel& model, std::span<const ContactSegment> segments,
+                    std::vector<int>& ids, std::vector<Curve>& curves);
+
 // Transversal hits of two curves, sorted along the first.
 using SortedHits = std::vector<std::pair<double, Vec2>>;
 

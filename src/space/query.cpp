@@ -134,18 +134,22 @@ struct SpaceQuery::Impl {
     for (const IntervalModel& m : intervals) stats.exact_intervals += m.exact ? 1 : 0;
   }
 
-  // The contact curve of each label of the model at theta; false unless each label gives
-  // exactly one contact segment.
+  // The contact curve of label l at the orientation `at` rotates by; false unless the label
+  // gives exactly one contact segment there, not a point.
+  bool label_curve(const SegmentLabel& l, const Transform& at, Curve& out) {
+    scratch_segments.clear();
+    add_pair_contacts(pair, moving[l.moving_feature], fixed[l.fixed_feature], at, scratch_segments);
+    if (scratch_segments.size() != 1 || scratch_segments[0].is_point) return false;
+    out = scratch_segments[0].curve;
+    return true;
+  }
+
+  // The contact curve of each label of the model at theta.
   bool evaluate_curves(const IntervalModel& m, double theta) {
-    scratch_curves.clear();
-    const Transform turn(Pose{0.0, 0.0, theta});
-    for (const SegmentLabel& l : m.boundary.labels) {
-      scratch_segments.clear();
-      add_pair_contacts(pair, moving[l.moving_feature], fixed[l.fixed_feature], turn,
-                        scratch_segments);
-      if (scratch_segments.size() != 1 || scratch_segments[0].is_point) return false;
-      scratch_curves.push_back(scratch_segments[0].curve);
-    }
+    const Transform at(Pose{0.0, 0.0, theta});
+    scratch_curves.resize(m.boundary.labels.size());
+    for (size_t l = 0; l < scratch_curves.size(); ++l)
+      if (!label_curve(m.boundary.labels[l], at, scratch_curves[l])) return false;
     return true;
   }
 
@@ -239,12 +243,7 @@ struct SpaceQuery::Impl {
   // The contact curve of label l at the query theta, evaluated once per query.
   const Curve* lazy_curve(int l) {
     if (curve_stamp[l] != stamp) {
-      const SegmentLabel& label = current->boundary.labels[l];
-      scratch_segments.clear();
-      add_pair_contacts(pair, moving[label.moving_feature], fixed[label.fixed_feature], turn,
-                        scratch_segments);
-      if (scratch_segments.size() != 1 || scratch_segments[0].is_point) return nullptr;
-      lazy_curves[l] = scratch_segments[0].curve;
+      if (!label_curve(current->boundary.labels[l], turn, lazy_curves[l])) return nullptr;
       curve_stamp[l] = stamp;
     }
     return &lazy_curves[l];
