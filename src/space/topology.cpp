@@ -38,6 +38,11 @@ constexpr int kMaxRefinement = 4;
 // the side's gap.
 constexpr int kMaxCarrySteps = 1000;
 
+// for_each_index_parallel's per-thread state, for tasks that need none.
+struct NoScratch {
+  explicit NoScratch(const Pair*) {}
+};
+
 int component_count(const Slice& s) {
   return static_cast<int>(s.free_components.size());
 }
@@ -134,10 +139,11 @@ class TopologyBuilder {
         static_cast<int>(std::count(far_.begin(), far_.end(), char{1}));
     sides_.resize(thetas.size());
     side_evaluated_.assign(thetas.size(), 0);
+    const std::vector<std::optional<BoundaryModel>> models = side_models();
     detail::for_each_index_parallel<detail::SliceWorker>(
         pair_, thetas.size(), options_.threads, [&](size_t i, detail::SliceWorker& w) {
           if (!has_side_[i]) return;
-          std::optional<BoundaryModel> model = side_model(static_cast<int>(i));
+          const std::optional<BoundaryModel>& model = models[side_interval(static_cast<int>(i))];
           bool evaluated = false;
           sides_[i] = w.slice(model ? &*model : nullptr, thetas[i], evaluated);
           side_evaluated_[i] = evaluated;
@@ -146,17 +152,34 @@ class TopologyBuilder {
         static_cast<int>(std::count(side_evaluated_.begin(), side_evaluated_.end(), char{1}));
   }
 
-  // A side slice lies inside its interval, so its representative's boundary model, where it
-  // holds, gives it at a fraction of the cost. Not when verifying joins: then each side
-  // slice is computed from scratch and checked against the representative, a check of the
-  // critical orientations.
-  std::optional<BoundaryModel> side_model(int side) const {
+  // The interval side slice 2k (before critical orientation k) or 2k + 1 (after it) lies in.
+  int side_interval(int side) const {
     const int n = static_cast<int>(criticals_.size());
     const int k = side / 2;
-    const int interval = side % 2 == 0 ? (k + n - 1) % n : k;
-    if (options_.verify_joins || !options_.evaluate_slices || representative_[interval] < 0)
-      return std::nullopt;
-    return detail::checked_model(pair_, space_.slices[representative_[interval]].slice);
+    return side % 2 == 0 ? (k + n - 1) % n : k;
+  }
+
+  // A side slice lies inside its interval, so its representative's boundary model, where it
+  // holds, gives it at a fraction of the cost: per interval, one model for its side slices
+  // (up to two), built in parallel. None when verifying joins: then each side slice is
+  // computed from scratch and checked against the representative, a check of the critical
+  // orientations.
+  std::vector<std::optional<BoundaryModel>> side_models() const {
+    std::vector<std::optional<BoundaryModel>> models(starts_.size());
+    if (options_.verify_joins || !options_.evaluate_slices) return models;
+    std::vector<int> wanted;
+    for (int i = 0; i < static_cast<int>(has_side_.size()); ++i) {
+      const int interval = side_interval(i);
+      if (has_side_[i] && representative_[interval] >= 0) wanted.push_back(interval);
+    }
+    std::sort(wanted.begin(), wanted.end());
+    wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
+    detail::for_each_index_parallel<NoScratch>(
+        pair_, wanted.size(), options_.threads, [&](size_t k, NoScratch&) {
+          const Slice& representative = space_.slices[representative_[wanted[k]]].slice;
+          models[wanted[k]] = detail::checked_model(pair_, representative);
+        });
+    return models;
   }
 
   // Whether stored slice `stored`, `gap` from critical orientation k, can stand in for a side
