@@ -55,8 +55,9 @@ int compare_spaces(const Pair& pair, const std::string& name, int& intermediates
     for (int end : {0, 1}) {
       const nlohmann::json &x = a["area_range"][end], &y = b["area_range"][end];
       EXPECT_EQ(x.is_null(), y.is_null()) << name << ": cell " << c;
-      if (x.is_number() && y.is_number())
+      if (x.is_number() && y.is_number()) {
         EXPECT_NEAR(x.get<double>(), y.get<double>(), area_slack) << name << ": cell " << c;
+      }
     }
     a.erase("area_range");
     b.erase("area_range");
@@ -180,6 +181,7 @@ TEST(EvaluatedSlices, ModelMustReproduceItsSlice) {
       std::sort(extra_node.contact_graph.nodes.begin(), extra_node.contact_graph.nodes.end());
       break;
     }
-  if (extra_node.contact_graph.nodes != slice.contact_graph.nodes)
+  if (extra_node.contact_graph.nodes != slice.contact_graph.nodes) {
     EXPECT_FALSE(model_reproduces(*model, extra_node));
+  }
 }

@@ -87,16 +87,19 @@ void expect_same_slice(const Pair& pair, const Slice& evaluated, const Slice& co
     EXPECT_EQ(evaluated.locate(m.sample), c.id) << what << ": component " << c.id;
     EXPECT_EQ(c.bounded, m.bounded) << what << ": component " << c.id;
     EXPECT_EQ(c.boundary.size(), m.boundary.size()) << what << ": component " << c.id;
-    if (c.bounded) EXPECT_NEAR(c.area, m.area, area_slack) << what << ": component " << c.id;
+    if (c.bounded) {
+      EXPECT_NEAR(c.area, m.area, area_slack) << what << ": component " << c.id;
+    }
   }
   EXPECT_EQ(realizable_labels(evaluated), realizable_labels(computed)) << what;
   EXPECT_EQ(evaluated.realizable.size(), computed.realizable.size()) << what;
   EXPECT_EQ(graph_labels(evaluated), graph_labels(computed)) << what;
   EXPECT_TRUE(evaluated.degenerate.empty()) << what;
-  if (std::isinf(computed.blocked_area))
+  if (std::isinf(computed.blocked_area)) {
     EXPECT_TRUE(std::isinf(evaluated.blocked_area)) << what;
-  else
+  } else {
     EXPECT_NEAR(evaluated.blocked_area, computed.blocked_area, area_slack) << what;
+  }
 }
 
 int expect_boundary_sides_agree_with_classify(const Pair& pair, const Slice& slice,
