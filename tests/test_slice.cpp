@@ -353,23 +353,28 @@ TEST(SliceOracle, ShortArcsInARowKeepTheBoundaryClosed) {
   }
 }
 
-// A Slicer keeps its working buffers from one slice to the next; no slice may depend on the
-// ones before it. Slices of different sizes in turn (a pair's orientations, then another
-// pair's) must each match a fresh compute_slice, field for field.
-TEST(SliceReuse, OneSlicerGivesTheSlicesOfFreshOnes) {
+// A Slicer keeps its working buffers from one slice to the next, and compute_slice keeps its
+// thread's from one call to the next, whatever the pair; no slice may depend on the ones
+// before it. Slices of different sizes in turn (every pair at one orientation, then the next
+// orientation) must each match the slice of a Slicer made for it alone, field for field.
+TEST(SliceReuse, ReusedBuffersGiveTheSlicesOfFreshOnes) {
   std::vector<Pair> pairs;
   for (const char* name : {"knee", "fixture", "cam"}) pairs.push_back(load_example(name));
   std::mt19937 rng(7);
   for (int i = 0; i < 4; ++i)
     pairs.push_back(testkit::random_pair(rng, 5 + i, 8 + 2 * i, i % 2 == 0).pair);
+  std::vector<Slicer> slicers;
+  for (const Pair& pair : pairs) slicers.emplace_back(pair);
   std::uniform_real_distribution<double> angle(-kPi, kPi);
-  for (const Pair& pair : pairs) {
-    Slicer slicer(pair);
-    for (int k = 0; k < 12; ++k) {
-      const double theta = k == 0 ? 0.0 : angle(rng);
-      EXPECT_EQ(slice_to_json(pair, slicer.slice(theta)),
-                slice_to_json(pair, compute_slice(pair, theta)))
-          << "theta " << theta;
+  for (int k = 0; k < 12; ++k) {
+    const double theta = k == 0 ? 0.0 : angle(rng);
+    for (size_t p = 0; p < pairs.size(); ++p) {
+      const Pair& pair = pairs[p];
+      const std::string fresh = slice_to_json(pair, Slicer(pair).slice(theta));
+      EXPECT_EQ(slice_to_json(pair, slicers[p].slice(theta)), fresh)
+          << "pair " << p << ", theta " << theta << ": the pair's own Slicer";
+      EXPECT_EQ(slice_to_json(pair, compute_slice(pair, theta)), fresh)
+          << "pair " << p << ", theta " << theta << ": compute_slice";
     }
   }
 }
