@@ -6,6 +6,7 @@
 #include <numeric>
 #include <random>
 #include <sstream>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 #include "cslice/classify.hpp"
@@ -377,6 +378,39 @@ TEST(SliceReuse, ReusedBuffersGiveTheSlicesOfFreshOnes) {
           << "pair " << p << ", theta " << theta << ": compute_slice";
     }
   }
+}
+
+// compute_slice's buffers are per thread: threads slicing different pairs at once, each in
+// its own order, get the slices one thread gets alone.
+TEST(SliceReuse, ThreadsSlicingAtOnceGetTheSameSlices) {
+  std::vector<Pair> pairs;
+  for (const char* name : {"knee", "fixture", "cam", "fastener"})
+    pairs.push_back(load_example(name));
+  const std::vector<double> thetas = {0.0, 0.7, -2.1, 1.9, 3.0};
+  std::vector<std::string> alone;
+  for (const Pair& pair : pairs)
+    for (double theta : thetas) alone.push_back(slice_to_json(pair, compute_slice(pair, theta)));
+  const size_t jobs = alone.size();
+  constexpr int kThreads = 4;
+  std::vector<std::vector<std::string>> got(kThreads, std::vector<std::string>(jobs));
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t)
+    threads.emplace_back([&, t] {
+      for (int round = 0; round < 3; ++round)
+        for (size_t k = 0; k < jobs; ++k) {
+          // A different order in each thread: shifted, and backwards in every other one.
+          const size_t shifted = (k + size_t(7 * t)) % jobs;
+          const size_t job = t % 2 ? jobs - 1 - shifted : shifted;
+          const Pair& pair = pairs[job / thetas.size()];
+          got[t][job] = slice_to_json(pair, compute_slice(pair, thetas[job % thetas.size()]));
+        }
+    });
+  for (std::thread& th : threads) th.join();
+  for (int t = 0; t < kThreads; ++t)
+    for (size_t job = 0; job < jobs; ++job)
+      EXPECT_TRUE(got[t][job] == alone[job])
+          << "thread " << t << ": " << pairs[job / thetas.size()].name << " at theta "
+          << thetas[job % thetas.size()] << " differs from the slice computed alone";
 }
 
 // ---- Clustering close points (the arrangement's vertices) --------------------------------
