@@ -113,6 +113,8 @@ Slice compute_slice(const Pair& pair, double theta);
 // any segment a realizable piece or a degenerate contact names. Pieces name only the lowest
 // of coincident segments, so pieces alone would miss the others.
 std::vector<int> realizable_segments(const Slice& slice);
+// The same as marks by id (1: realizable), into a buffer the caller keeps from slice to slice.
+void mark_realizable_segments(const Slice& slice, std::vector<char>& marked);
 
 // Many slices of one pair (the engine behind compute_slice): the features' contact data and
 // the placement tester's indexes are built once instead of per slice. Not thread-safe, as

@@ -366,12 +366,17 @@ class SliceBuilder {
 
 // Ids number the contact segments, so marking beats sorting the many repeats (a segment has
 // a piece per edge): one pass, ids in increasing order.
-std::vector<int> realizable_segments(const Slice& slice) {
-  std::vector<char> marked(slice.contact_segments.size(), 0);
+void mark_realizable_segments(const Slice& slice, std::vector<char>& marked) {
+  marked.assign(slice.contact_segments.size(), 0);
   for (int id : slice.contact_graph.nodes) marked[size_t(id)] = 1;
   for (const ContactPiece& p : slice.realizable) marked[size_t(p.segment)] = 1;
   for (const DegenerateContact& d : slice.degenerate)
     for (int id : d.segments) marked[size_t(id)] = 1;
+}
+
+std::vector<int> realizable_segments(const Slice& slice) {
+  std::vector<char> marked;
+  mark_realizable_segments(slice, marked);
   std::vector<int> ids;
   for (size_t id = 0; id < marked.size(); ++id)
     if (marked[id]) ids.push_back(int(id));

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <iterator>
+#include <span>
 
 #include "criticals/families.hpp"
 #include "cslice/slice_io.hpp"
@@ -37,11 +38,12 @@ void plan_interval(double a, double b, double step, int interval, std::vector<Pl
   }
 }
 
-SliceCorrespondence correspond(int from, int to, const std::vector<SegmentLabel>& a,
-                               const std::vector<SegmentLabel>& b) {
+SliceCorrespondence correspond(int from, int to, std::span<const SegmentLabel> a,
+                               std::span<const SegmentLabel> b) {
   SliceCorrespondence c;
   c.from = from;
   c.to = to;
+  c.kept.reserve(std::min(a.size(), b.size()));  // most labels carry on: one allocation
   std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(c.kept));
   std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(c.appearing));
   std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(c.vanishing));
@@ -146,15 +148,43 @@ std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Plann
   return out;
 }
 
+namespace {
+// Appends the slice's realizable labels, sorted, each once (realizable_labels).
+void append_realizable_labels(const Slice& slice, std::vector<char>& marked,
+                              std::vector<SegmentLabel>& out) {
+  const size_t first = out.size();
+  mark_realizable_segments(slice, marked);
+  for (size_t id = 0; id < marked.size(); ++id)
+    if (marked[id]) {
+      const ContactSegment& s = slice.contact_segments[id];  // ids number the segments
+      out.push_back({s.moving_feature, s.fixed_feature});
+    }
+  std::sort(out.begin() + first, out.end());
+  out.erase(std::unique(out.begin() + first, out.end()), out.end());
+}
+}  // namespace
+
 // Slice i to slice i + 1, and the last back to the first: theta = -pi and pi are one slice.
+// Every slice's labels go into one buffer (slice i's from start[i] to start[i + 1]): slices
+// are many and their labels few, and a vector per slice, with the marks behind it, cost more
+// than comparing them.
 std::vector<SliceCorrespondence> slice_correspondences(const std::vector<SpaceSlice>& slices) {
-  std::vector<std::vector<SegmentLabel>> labels;
-  for (const SpaceSlice& s : slices) labels.push_back(realizable_labels(s.slice));
+  std::vector<SegmentLabel> labels;
+  std::vector<size_t> start = {0};
+  std::vector<char> marked;
+  for (const SpaceSlice& s : slices) {
+    append_realizable_labels(s.slice, marked, labels);
+    start.push_back(labels.size());
+  }
+  const auto of = [&](int i) {
+    return std::span<const SegmentLabel>(labels.data() + start[i], start[i + 1] - start[i]);
+  };
   std::vector<SliceCorrespondence> out;
   const int n = static_cast<int>(slices.size());
+  out.reserve(size_t(n));
   for (int i = 0; i < n && n > 1; ++i) {
     const int j = (i + 1) % n;
-    out.push_back(correspond(i, j, labels[i], labels[j]));
+    out.push_back(correspond(i, j, of(i), of(j)));
   }
   return out;
 }
@@ -202,12 +232,8 @@ double interpolation_step(double reach, double tolerance) {
 
 std::vector<SegmentLabel> realizable_labels(const Slice& slice) {
   std::vector<SegmentLabel> out;
-  for (int id : realizable_segments(slice)) {
-    const ContactSegment& s = slice.contact_segments.at(id);  // ids number the segments
-    out.push_back({s.moving_feature, s.fixed_feature});
-  }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
+  std::vector<char> marked;
+  detail::append_realizable_labels(slice, marked, out);
   return out;
 }
 
