@@ -732,7 +732,10 @@ SpaceTopology compute_topology(const Pair& pair, const SlicedSpace& space,
 }
 
 std::vector<SegmentLabel> boundary_labels(const Slice& s, const FreeComponent& c) {
+  size_t pieces = 0;
+  for (const auto& cycle : c.boundary) pieces += cycle.size();
   std::vector<SegmentLabel> out;
+  out.reserve(pieces);  // one allocation: the topology compares these for every matched pair
   for (const auto& cycle : c.boundary)
     for (const ContactPiece& piece : cycle) {
       const ContactSegment& seg = s.contact_segments.at(piece.segment);
