@@ -106,7 +106,9 @@ struct Slice {
 // Contact segments of every compatible feature pair at theta, after local overlap filtering.
 std::vector<ContactSegment> contact_segments(const Pair& pair, double theta);
 
-// The whole slice at theta.
+// The whole slice at theta. Thread-safe; the calling thread keeps the working buffers for its
+// next call (released after a slice of more than 20,000 contact segments). For many slices of
+// one pair, a Slicer also keeps the pair's contact data.
 Slice compute_slice(const Pair& pair, double theta);
 
 // Ids of the realizable contact segments, sorted, each once: the contact graph's nodes, plus
