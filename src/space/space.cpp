@@ -108,8 +108,10 @@ void for_each_index_parallel(const Pair& pair, size_t count, int threads,
 }
 
 std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Planned>& plan,
-                                       int threads, bool evaluate, const ProgressReport& progress) {
+                                       int threads, bool evaluate, const ProgressReport& progress,
+                                       KnownModels* models) {
   std::vector<SpaceSlice> out(plan.size());
+  if (models) models->assign(plan.size(), std::nullopt);
   std::atomic<size_t> done = 0;
   const auto store = [&](size_t i, Slice slice, bool evaluated) {
     out[i] = {plan[i].theta, plan[i].kind, plan[i].interval, std::move(slice), evaluated};
@@ -144,6 +146,8 @@ std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Plann
       Slice slice = w.slice(model ? &*model : nullptr, plan[i].theta, evaluated);
       store(i, std::move(slice), evaluated);
     }
+    // Each interval writes its own representative's slot.
+    if (models && representative[k] >= 0) (*models)[representative[k]] = std::move(model);
   });
   return out;
 }
@@ -253,12 +257,14 @@ SlicedSpace compute_space(const Pair& pair, const SpaceOptions& options) {
   start = std::chrono::steady_clock::now();
   space.reach = contact_reach(pair);
   space.max_step = interpolation_step(space.reach, pair.tol.contact);
-  space.slices = detail::compute_slices(pair, detail::plan_slices(space.criticals, space.max_step),
-                                        options.threads, options.evaluate_slices, options.progress);
+  detail::KnownModels models;
+  space.slices =
+      detail::compute_slices(pair, detail::plan_slices(space.criticals, space.max_step),
+                             options.threads, options.evaluate_slices, options.progress, &models);
   space.correspondence = detail::slice_correspondences(space.slices);
   report("topology", 0, 1);
-  space.topology = compute_topology(
-      pair, space, {options.threads, options.verify_joins, options.evaluate_slices});
+  space.topology = detail::compute_topology(
+      pair, space, {options.threads, options.verify_joins, options.evaluate_slices}, &models);
   report("topology", 1, 1);
   space.seconds_slices = seconds_since(start);
   return space;

@@ -8,6 +8,7 @@
 #include <tbb/task_arena.h>
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "contacts/contact_features.hpp"
@@ -27,13 +28,23 @@ struct PlannedSlice {
 // orientations are sliced").
 std::vector<PlannedSlice> plan_slices(const CriticalSet& criticals, double step);
 
+// Boundary models already checked, by the index of the slice they model: empty where none
+// was tried; holding an empty optional where one was tried and cannot stand in
+// (checked_model). The topology's side slices reuse those of the intermediate slices.
+using KnownModels = std::vector<std::optional<std::optional<BoundaryModel>>>;
+
 // The slices at the planned orientations, in parallel (`threads` as in SpaceOptions), each
 // stored at its own index: the same whatever the thread count. Intermediate slices are
 // evaluated from their interval's representative (SpaceOptions::evaluate_slices) when
-// `evaluate`.
+// `evaluate`; the representatives' models go into `models` when given.
 std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<PlannedSlice>& plan,
                                        int threads, bool evaluate,
-                                       const ProgressReport& progress = {});
+                                       const ProgressReport& progress = {},
+                                       KnownModels* models = nullptr);
+
+// compute_topology, taking the side slices' models from `known` where they were built.
+SpaceTopology compute_topology(const Pair& pair, const SlicedSpace& space,
+                               const TopologyOptions& options, const KnownModels* known);
 
 // Calls run(i, worker) for every i in [0, count), in parallel (`threads` as in SpaceOptions),
 // with one Worker per thread, made as Worker(&pair); run must store by index to keep results

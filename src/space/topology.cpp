@@ -49,8 +49,9 @@ int component_count(const Slice& s) {
 
 class TopologyBuilder {
  public:
-  TopologyBuilder(const Pair& pair, const SlicedSpace& space, const TopologyOptions& options)
-      : pair_(pair), space_(space), options_(options) {}
+  TopologyBuilder(const Pair& pair, const SlicedSpace& space, const TopologyOptions& options,
+                  const detail::KnownModels* known)
+      : pair_(pair), space_(space), options_(options), known_(known) {}
 
   SpaceTopology build() {
     plan_intervals();
@@ -139,13 +140,12 @@ class TopologyBuilder {
         static_cast<int>(std::count(far_.begin(), far_.end(), char{1}));
     sides_.resize(thetas.size());
     side_evaluated_.assign(thetas.size(), 0);
-    const std::vector<std::optional<BoundaryModel>> models = side_models();
+    const std::vector<const BoundaryModel*> models = side_models();
     detail::for_each_index_parallel<detail::SliceWorker>(
         pair_, thetas.size(), options_.threads, [&](size_t i, detail::SliceWorker& w) {
           if (!has_side_[i]) return;
-          const std::optional<BoundaryModel>& model = models[side_interval(static_cast<int>(i))];
           bool evaluated = false;
-          sides_[i] = w.slice(model ? &*model : nullptr, thetas[i], evaluated);
+          sides_[i] = w.slice(models[side_interval(static_cast<int>(i))], thetas[i], evaluated);
           side_evaluated_[i] = evaluated;
         });
     topo_.checks.side_slices_evaluated =
@@ -164,8 +164,8 @@ class TopologyBuilder {
   // (up to two), built in parallel. None when verifying joins: then each side slice is
   // computed from scratch and checked against the representative, a check of the critical
   // orientations.
-  std::vector<std::optional<BoundaryModel>> side_models() const {
-    std::vector<std::optional<BoundaryModel>> models(starts_.size());
+  std::vector<const BoundaryModel*> side_models() {
+    std::vector<const BoundaryModel*> models(starts_.size(), nullptr);
     if (options_.verify_joins || !options_.evaluate_slices) return models;
     std::vector<int> wanted;
     for (int i = 0; i < static_cast<int>(has_side_.size()); ++i) {
@@ -174,11 +174,24 @@ class TopologyBuilder {
     }
     std::sort(wanted.begin(), wanted.end());
     wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
+    // The model of a representative with intermediate slices was built for them already.
+    const auto known = [&](int interval) -> const std::optional<std::optional<BoundaryModel>>* {
+      if (!known_) return nullptr;
+      const auto& slot = (*known_)[size_t(representative_[interval])];
+      return slot ? &slot : nullptr;
+    };
+    built_models_.assign(starts_.size(), std::nullopt);
     detail::for_each_index_parallel<NoScratch>(
         pair_, wanted.size(), options_.threads, [&](size_t k, NoScratch&) {
+          if (known(wanted[k])) return;
           const Slice& representative = space_.slices[representative_[wanted[k]]].slice;
-          models[wanted[k]] = detail::checked_model(pair_, representative);
+          built_models_[wanted[k]] = detail::checked_model(pair_, representative);
         });
+    for (int interval : wanted) {
+      const std::optional<BoundaryModel>& model =
+          known(interval) ? **known(interval) : built_models_[interval];
+      models[interval] = model ? &*model : nullptr;
+    }
     return models;
   }
 
@@ -676,6 +689,8 @@ class TopologyBuilder {
   const Pair& pair_;
   const SlicedSpace& space_;
   TopologyOptions options_;
+  const detail::KnownModels* known_;                        // models built with the slices, or null
+  std::vector<std::optional<BoundaryModel>> built_models_;  // per interval: those built here
   std::vector<double> criticals_, starts_, ends_, side_angles_;
   std::vector<char> has_side_;  // 2k: an extra slice before critical k; 2k + 1: after it
   std::vector<char> by_count_;  // per critical: joined by joins_follow_from_counts
@@ -728,7 +743,12 @@ double side_slice_angle(const Tolerances& tol) {
 
 SpaceTopology compute_topology(const Pair& pair, const SlicedSpace& space,
                                const TopologyOptions& options) {
-  return TopologyBuilder(pair, space, options).build();
+  return TopologyBuilder(pair, space, options, nullptr).build();
+}
+
+SpaceTopology detail::compute_topology(const Pair& pair, const SlicedSpace& space,
+                                       const TopologyOptions& options, const KnownModels* known) {
+  return TopologyBuilder(pair, space, options, known).build();
 }
 
 std::vector<SegmentLabel> boundary_labels(const Slice& s, const FreeComponent& c) {
