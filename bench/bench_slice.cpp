@@ -7,6 +7,8 @@
 //   BM_SlicerExample/<name>     one more slice of an example by a Slicer already slicing it
 //                               (as the sliced space does), cycling through 64 orientations
 //   BM_SliceStar/<n>            smooth random star polygons, n vertices per part
+//   BM_SlicerStar/<n>           the same by a Slicer made once (the pair's contact data built
+//                               outside the timed loop)
 //   BM_CgalStar/<n>             CGAL::minkowski_sum_by_reduced_convolution_2 (exact
 //                               kernel) of the same pairs: fixed + moving turned and reflected
 //   BM_SliceRoughStar/<n>       rough stars (independent radius noise): k grows like n^2
@@ -135,6 +137,18 @@ void BM_SlicerExample(benchmark::State& state, const std::string& name) {
 void BM_SliceStar(benchmark::State& state) {
   run_slice(state, star_pair(Shape::smooth, int(state.range(0))).pair, kStarTheta);
 }
+// The same star slice by a Slicer made outside the timed loop: the pair's contact data
+// (contact features, the index of fixed normals) are then built once, as for every slice of
+// a sliced space; compute_slice builds them per call.
+void BM_SlicerStar(benchmark::State& state) {
+  const cslice::Pair& pair = star_pair(Shape::smooth, int(state.range(0))).pair;
+  cslice::Slicer slicer(pair);
+  for (auto _ : state) {
+    const cslice::Slice slice = slicer.slice(kStarTheta);
+    benchmark::DoNotOptimize(slice.blocked_area);
+  }
+  state.counters["features"] = features(pair);
+}
 void BM_SliceRoughStar(benchmark::State& state) {
   run_slice(state, star_pair(Shape::rough, int(state.range(0))).pair, kStarTheta);
 }
@@ -194,6 +208,7 @@ BENCHMARK(BM_SliceStar)
     ->Arg(10000)
     ->Unit(benchmark::kMillisecond)
     ->Complexity(benchmark::oNLogN);
+BENCHMARK(BM_SlicerStar)->Arg(100)->Arg(300)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CgalStar)->Arg(100)->Arg(300)->Arg(1000)->Unit(benchmark::kMillisecond);
 // Tens of seconds each with the exact kernel: one iteration.
 BENCHMARK(BM_CgalStar)->Arg(3000)->Arg(10000)->Iterations(1)->Unit(benchmark::kMillisecond);
