@@ -348,10 +348,12 @@ SlicedSpace read_space(const json& top, const Pair& pair, int threads) {
   const json& stored = require_array(top, "", "slices");
   const auto plan = read_plan(stored, pair, space.criticals, space.max_step);
   // Everything the recomputation needs is known to be well formed; now the slices.
-  space.slices = detail::compute_slices(pair, plan, threads, true);
+  // As compute_space: the side slices reuse the models built for the intermediate ones.
+  detail::KnownModels models;
+  space.slices = detail::compute_slices(pair, plan, threads, true, {}, &models);
   for (size_t i = 0; i < stored.size(); ++i) check_slice(stored[i], i, space.slices[i], pair);
   space.correspondence = detail::slice_correspondences(space.slices);
-  space.topology = compute_topology(pair, space, {threads, false, true});
+  space.topology = detail::compute_topology(pair, space, {threads, false, true}, &models);
   check_topology(top, space);
   check_counts(top, space);
   if (const auto it = top.find("timing"); it != top.end() && it->is_object()) {
