@@ -365,6 +365,49 @@ TEST_F(SpaceCli, StatsPrintsOneMarkdownRowPerPair) {
   EXPECT_NE(lines[2].find("| 1 (4 of 4 slices) |"), std::string::npos) << lines[2];
 }
 
+// The row with its three time cells (criticals, slices, total) blanked: all that may differ
+// from run to run.
+std::string without_times(const std::string& row) {
+  std::vector<std::string> cells;
+  std::istringstream in(row);
+  for (std::string cell; std::getline(in, cell, '|');) cells.push_back(cell);
+  for (size_t i : {4u, 6u, 7u}) cells.at(i) = " t ";  // cells[0] is before the first bar
+  std::string out;
+  for (const std::string& c : cells) out += c + "|";
+  return out;
+}
+
+TEST_F(SpaceCli, StatsRunsRepeatsAndKeepsTheTable) {
+  const std::string pair = testkit::quoted(testkit::example_path("cam"));
+  const testkit::RunResult once = testkit::run_cli("stats " + pair, dir_);
+  const testkit::RunResult thrice = testkit::run_cli("stats --runs 3 " + pair, dir_);
+  ASSERT_EQ(once.status, 0) << once.err;
+  ASSERT_EQ(thrice.status, 0) << thrice.err;
+  const auto rows = [](const std::string& out) {
+    std::vector<std::string> lines;
+    std::istringstream in(out);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+  };
+  const std::vector<std::string> a = rows(once.out), b = rows(thrice.out);
+  ASSERT_EQ(a.size(), 3u) << once.out;
+  ASSERT_EQ(b.size(), 3u) << thrice.out;
+  EXPECT_EQ(a[0], b[0]);
+  EXPECT_EQ(without_times(a[2]), without_times(b[2])) << a[2] << "\n" << b[2];
+  EXPECT_EQ(b[2].rfind("| cam | 16 (8+8) |", 0), 0u) << b[2];
+}
+
+TEST_F(SpaceCli, StatsRejectsRunsBelowOne) {
+  for (const char* runs : {"0", "-2"}) {
+    const testkit::RunResult r = testkit::run_cli(
+        std::string("stats --runs ") + runs + " " + testkit::quoted(testkit::example_path("cam")),
+        dir_);
+    EXPECT_EQ(r.status, 2) << runs;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_NE(r.err.find("--runs"), std::string::npos) << r.err;
+  }
+}
+
 TEST_F(SpaceCli, StatsOnBadInputPrintsNothing) {
   testkit::write_file(dir_ / "bad.json", "{\"name\": 3");
   const testkit::RunResult r =
