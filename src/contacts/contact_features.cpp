@@ -7,13 +7,12 @@ double angle_of(Vec2 v) {
   return std::atan2(v.y, v.x);
 }
 
-ContactFeature from_edge(const Part& part, const Feature& f) {
-  ContactFeature c;
+void from_edge(const Part& part, const Feature& f, ContactFeature& c) {
   c.kind = f.kind;
   c.edge = edge_of(part, f);
   if (f.kind == FeatureKind::segment) {
     c.normals = {angle_of(perp_right(c.edge.to - c.edge.from)), 0.0};
-    return c;
+    return;
   }
   c.center = c.edge.center;
   if (c.edge.sweep > 0.0) {
@@ -25,29 +24,31 @@ ContactFeature from_edge(const Part& part, const Feature& f) {
     c.rho = -c.edge.radius;
     c.normals = {c.edge.start_angle + c.edge.sweep + kPi, -c.edge.sweep};
   }
-  return c;
 }
 
-ContactFeature from_vertex(const Feature& f) {
-  ContactFeature c;
+void from_vertex(const Feature& f, bool all_normals, ContactFeature& c) {
   c.kind = FeatureKind::vertex;
   c.center = f.point;
   c.can_touch = f.convexity == Convexity::convex;
+  if (!c.can_touch && !all_normals) return;
   const double turn = std::atan2(cross(f.normal_in, f.normal_out), dot(f.normal_in, f.normal_out));
   c.normals = {angle_of(f.normal_in), std::max(0.0, turn)};
-  return c;
 }
 
 }  // namespace
 
-std::vector<ContactFeature> contact_features(const Part& part) {
-  std::vector<ContactFeature> out;
-  out.reserve(part.features.size());
+std::vector<ContactFeature> contact_features(const Part& part, bool all_normals) {
+  // Sized first and filled in place: a feature is mostly its curve, and copying each one
+  // in cost a fair share of a one-shot slice's set-up.
+  std::vector<ContactFeature> out(part.features.size());
   for (size_t i = 0; i < part.features.size(); ++i) {
     const Feature& f = part.features[i];
-    ContactFeature c = f.kind == FeatureKind::vertex ? from_vertex(f) : from_edge(part, f);
+    ContactFeature& c = out[i];
+    if (f.kind == FeatureKind::vertex)
+      from_vertex(f, all_normals, c);
+    else
+      from_edge(part, f, c);
     c.feature = static_cast<int>(i);
-    out.push_back(c);
   }
   return out;
 }

@@ -27,8 +27,10 @@ struct ContactFeature {
   AngleInterval normals;  // outward normals the feature can touch along
 };
 
-// One per feature of the part, in feature order (element i describes feature i).
-std::vector<ContactFeature> contact_features(const Part& part);
+// One per feature of the part, in feature order (element i describes feature i). Without
+// all_normals, a vertex that cannot touch (reflex or smooth) is left without its normals
+// (two angles each, and such a vertex touches nothing): for callers that never read them.
+std::vector<ContactFeature> contact_features(const Part& part, bool all_normals = true);
 
 // Whether a feature pair can touch at some orientation (local overlap filtering by
 // convexity; the normal sets decide at which orientations): reflex vertices, segment pairs,

@@ -247,8 +247,11 @@ class NormalIndex {
     std::vector<int> fill(bucket_start_.begin(), bucket_start_.end() - 1);
     for (size_t i = 0; i < fixed.size(); ++i)
       for_each_bucket(ranges_[i], [&](size_t b) { bucket_items_[fill[b]++] = int(i); });
+    // Only features that can touch are ever asked for theirs (and a vertex that cannot
+    // touch has none: see ContactMaker).
     normals_.resize(fixed.size());
-    for (size_t i = 0; i < fixed.size(); ++i) normals_[i] = unit_vector(fixed[i].normals.lo);
+    for (size_t i = 0; i < fixed.size(); ++i)
+      if (fixed[i].can_touch) normals_[i] = unit_vector(fixed[i].normals.lo);
     if (fixed.size() <= kScanLimit) {
       masks_.assign(bucket_count_, 0);
       for (size_t b = 0; b < bucket_count_; ++b)
@@ -298,7 +301,7 @@ class NormalIndex {
   // Whether candidates reads the features from bits (and can filter them by a mask).
   bool few_features() const { return ranges_.size() <= kScanLimit; }
 
-  // unit_vector(f.normals.lo) of every fixed feature f, in feature order.
+  // unit_vector(f.normals.lo) of every fixed feature f that can touch, in feature order.
   const std::vector<Vec2>& normals() const { return normals_; }
 
  private:
@@ -339,9 +342,9 @@ class NormalIndex {
   size_t bucket_count_;
   std::vector<int> bucket_start_, bucket_items_;  // bucket b: items [start[b], start[b + 1])
   std::vector<Range> ranges_;                     // per fixed feature; empty when it cannot touch
-  std::vector<Vec2> normals_;                     // per fixed feature, unit_vector(normals.lo)
-  std::vector<uint64_t> masks_;          // per bucket, its features as bits, when there are few
-  mutable std::vector<uint64_t> seen_;   // candidates' bitmap of fixed features, left all zero
+  std::vector<Vec2> normals_;           // per fixed feature that can touch, unit_vector(normals.lo)
+  std::vector<uint64_t> masks_;         // per bucket, its features as bits, when there are few
+  mutable std::vector<uint64_t> seen_;  // candidates' bitmap of fixed features, left all zero
   mutable std::vector<size_t> touched_;  // the words of seen_ a query marked
   double width_ = 1.0;
   double eps_;
@@ -349,8 +352,10 @@ class NormalIndex {
 
 ContactMaker::ContactMaker(const Pair& pair)
     : pair_(pair),
-      moving_(contact_features(pair.moving)),
-      fixed_(contact_features(pair.fixed)),
+      // A feature that cannot touch is never paired (segments skips it, the index leaves
+      // it out), so its normals are not needed.
+      moving_(contact_features(pair.moving, false)),
+      fixed_(contact_features(pair.fixed, false)),
       index_(std::make_unique<NormalIndex>(fixed_, pair.tol.angular)),
       trig_(std::make_unique<TrigMemo>()) {
   // Which pairs can touch at all does not depend on theta: with few fixed features, as a
