@@ -85,20 +85,31 @@ bool drops_hit_at(const Intersection& r, Vec2 p, double eps) {
 // the two curves run within eps of each other there and never cross, even where the exact
 // circles do (a lens thinner than eps), so an end within eps of the other curve touches it
 // from the side the tangency implies.
+// `near` says which ends pass near_carrier: a.from and a.to against b, then b.from and b.to
+// against a.
 void add_endpoint_touches(Intersection& r, const Curve& a, const Curve& b, bool tangent, double eps,
-                          double slack_a, double slack_b) {
-  for (double ta : {0.0, 1.0}) {
-    const Vec2 p = ta == 0.0 ? a.from : a.to;  // point_at(a, ta)
-    if (!near_carrier(b, p, eps, slack_b) || drops_hit_at(r, p, eps)) continue;
+                          const std::array<bool, 4>& near) {
+  for (int k = 0; k < 2; ++k) {
+    const double ta = k;
+    const Vec2 p = k == 0 ? a.from : a.to;  // point_at(a, ta)
+    if (!near[k] || drops_hit_at(r, p, eps)) continue;
     const NearestPoint n = nearest_point(b, p);
     if (n.distance <= eps) add_hit(r, point_hit(p, ta, n.t, tangent), eps);
   }
-  for (double tb : {0.0, 1.0}) {
-    const Vec2 p = tb == 0.0 ? b.from : b.to;  // point_at(b, tb)
-    if (!near_carrier(a, p, eps, slack_a) || drops_hit_at(r, p, eps)) continue;
+  for (int k = 0; k < 2; ++k) {
+    const double tb = k;
+    const Vec2 p = k == 0 ? b.from : b.to;  // point_at(b, tb)
+    if (!near[2 + k] || drops_hit_at(r, p, eps)) continue;
     const NearestPoint n = nearest_point(a, p);
     if (n.distance <= eps) add_hit(r, point_hit(p, n.t, tb, tangent), eps);
   }
+}
+void add_endpoint_touches(Intersection& r, const Curve& a, const Curve& b, bool tangent, double eps,
+                          double slack_a, double slack_b) {
+  add_endpoint_touches(
+      r, a, b, tangent, eps,
+      {near_carrier(b, a.from, eps, slack_b), near_carrier(b, a.to, eps, slack_b),
+       near_carrier(a, b.from, eps, slack_a), near_carrier(a, b.to, eps, slack_a)});
 }
 
 // Parameter on an arc for a point known to lie on its circle, or NaN when it is more than
@@ -202,10 +213,12 @@ Intersection intersect_segment_segment(const Curve& a, const Curve& b, double ep
   Intersection r;
   const Vec2 da = a.to - a.from, db = b.to - b.from;
   const double la = length(da), lb = length(db);
-  const double b_off_a =
-      std::max(std::fabs(cross(da, b.from - a.from)), std::fabs(cross(da, b.to - a.from))) / la;
-  const double a_off_b =
-      std::max(std::fabs(cross(db, a.from - b.from)), std::fabs(cross(db, a.to - b.from))) / lb;
+  // How far each end is off the other's carrier, times its length: near_carrier's very
+  // products, kept for the endpoint touches.
+  const double b0 = std::fabs(cross(da, b.from - a.from)), b1 = std::fabs(cross(da, b.to - a.from));
+  const double a0 = std::fabs(cross(db, a.from - b.from)), a1 = std::fabs(cross(db, a.to - b.from));
+  const double b_off_a = std::max(b0, b1) / la;
+  const double a_off_b = std::max(a0, a1) / lb;
   if (b_off_a <= eps || a_off_b <= eps) {
     collinear_overlap(r, a, b, eps);
   } else {
@@ -218,8 +231,10 @@ Intersection intersect_segment_segment(const Curve& a, const Curve& b, double ep
         add_hit(r, point_hit(lerp(a.from, a.to, tc), tc, std::clamp(u, 0.0, 1.0), false), eps);
       }
     }
-    // carrier_slack of each, from the lengths already at hand.
-    add_endpoint_touches(r, a, b, false, eps, eps * la, eps * lb);
+    // near_carrier of each end, with carrier_slack from the lengths already at hand.
+    const double slack_a = eps * la, slack_b = eps * lb;
+    add_endpoint_touches(r, a, b, false, eps,
+                         {a0 <= slack_b, a1 <= slack_b, b0 <= slack_a, b1 <= slack_a});
   }
   finish_kind(r);
   return r;
