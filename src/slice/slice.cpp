@@ -238,10 +238,11 @@ class SliceBuilder {
     for (size_t v = 0; v < vertices; ++v) {
       const std::span<const int> out = arr_->outgoing(int(v));
       if (out.empty()) continue;
-      // Most vertices fail at their first half-edge: stop there.
-      const bool all_blocked = std::all_of(out.begin(), out.end(), [&](int h) {
-        return !realizable_[h / 2] && blocked_[arr_->face_of(h)];
-      });
+      // Most vertices fail at their first half-edge: stop there. An edge that is not
+      // realizable has blocked faces on both sides (find_realizable_edges), so its own mark
+      // says whether the face beside it is blocked.
+      const bool all_blocked =
+          std::none_of(out.begin(), out.end(), [&](int h) { return realizable_[h / 2]; });
       if (!all_blocked || !sectors_explained_locally(int(v))) continue;
       if (blocked_at(arr_->vertices[v])) continue;
       std::vector<int> ids;
