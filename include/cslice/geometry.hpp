@@ -161,7 +161,13 @@ struct Curve {
   bool is_counterclockwise() const { return sweep > 0.0; }
 };
 
-Curve make_segment(Vec2 from, Vec2 to);
+// Inline: every segment piece of an arrangement and many contact segments are made here.
+inline Curve make_segment(Vec2 from, Vec2 to) {
+  Curve c;
+  c.from = from;
+  c.to = to;
+  return c;
+}
 // Arc from `from` to `to` with the given bulge; a zero bulge gives a segment.
 Curve make_bulge_arc(Vec2 from, Vec2 to, double bulge);
 // The radius of the arc of that bulge (nonzero) over a chord of length `chord`.
@@ -226,7 +232,11 @@ inline Vec2 point_at(const Curve& c, double t) {
 // Unit tangent in the direction of travel at parameter t.
 Vec2 tangent_at(const Curve& c, double t);
 // Signed curvature: +1/r for counterclockwise arcs, -1/r for clockwise arcs, 0 for segments.
-double signed_curvature(const Curve& c);
+// Inline: read for every half-edge ordered around a vertex.
+inline double signed_curvature(const Curve& c) {
+  if (c.is_segment()) return 0.0;
+  return c.sweep > 0.0 ? 1.0 / c.radius : -1.0 / c.radius;
+}
 double curve_length(const Curve& c);
 // The box of an arc: its ends and the extreme points of its circle that it passes.
 Box arc_bounding_box(const Curve& c);

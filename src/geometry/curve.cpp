@@ -11,13 +11,6 @@ double wrap_angle(double a) {
   return a - kPi;
 }
 
-Curve make_segment(Vec2 from, Vec2 to) {
-  Curve c;
-  c.from = from;
-  c.to = to;
-  return c;
-}
-
 // The bulge gives the centre without trigonometry: with b = tan(sweep/4), the centre lies
 // at distance d(1 - b^2)/(4b) to the left of the chord's midpoint (negative: to the right)
 // and the radius is d(1 + b^2)/(4|b|), d the chord length.
@@ -76,11 +69,6 @@ Vec2 tangent_at(const Curve& c, double t) {
   if (c.is_segment()) return normalized(c.to - c.from);
   const Vec2 radial = unit_vector(c.start_angle + t * c.sweep);
   return c.sweep > 0.0 ? perp_left(radial) : perp_right(radial);
-}
-
-double signed_curvature(const Curve& c) {
-  if (c.is_segment()) return 0.0;
-  return c.sweep > 0.0 ? 1.0 / c.radius : -1.0 / c.radius;
 }
 
 double curve_length(const Curve& c) {
