@@ -91,33 +91,37 @@ const std::array<AxisDirection, 4>& axis_directions() {
   return axes;
 }
 
-// Whether arc_parameter_of_angle(c, a) lies in [0, 1], from its angle delta before the
-// division: delta / span is in [0, 1] exactly when delta <= span (a quotient of positive
-// doubles rounds above 1 whenever the numerator is the larger), and delta = 2pi becomes
-// 0 / span when moved back a turn. Any other delta beyond span ends outside [0, 1].
-bool arc_passes(const Curve& c, double span, double a) {
-  const double delta = arc_turn(c, a);
-  return delta <= span || delta == kTwoPi;
-}
-
 }  // namespace
 
+// Whether an arc passes an axis is whether arc_parameter_of_angle(c, a) lies in [0, 1],
+// decided from its angle delta before the division: delta / span is in [0, 1] exactly when
+// delta <= span (a quotient of positive doubles rounds above 1 whenever the numerator is the
+// larger), and delta = 2pi becomes 0 / span when moved back a turn. Any other delta beyond
+// span ends outside [0, 1].
 Box arc_bounding_box(const Curve& c) {
   Box b;
   b.add(c.from);
   b.add(c.to);
   const double span = std::fabs(c.sweep);
-  const bool plain = span > 0.0 && span <= kTwoPi;  // else the division's own rules decide
-  for (const AxisDirection& axis : axis_directions()) {
-    bool passes;
-    if (plain) {
-      passes = arc_passes(c, span, axis.angle);
-    } else {
+  const std::array<AxisDirection, 4>& axes = axis_directions();
+  if (!(span > 0.0 && span <= kTwoPi)) {  // the division's own rules decide
+    for (const AxisDirection& axis : axes) {
       const double t = arc_parameter_of_angle(c, axis.angle);
-      passes = t >= 0.0 && t <= 1.0;
+      if (t >= 0.0 && t <= 1.0) b.add(c.center + c.radius * axis.unit);
     }
-    if (passes) b.add(c.center + c.radius * axis.unit);
+    return b;
   }
+  // arc_passes for each axis, the loop unrolled and the direction of travel chosen once
+  // (every arc box of a slice comes here).
+  const bool ccw = c.sweep > 0.0;
+  auto passes = [&](double a) {
+    const double delta = ccw ? ccw_turn(c.start_angle, a) : ccw_turn(a, c.start_angle);
+    return delta <= span || delta == kTwoPi;
+  };
+  if (passes(axes[0].angle)) b.add(c.center + c.radius * axes[0].unit);
+  if (passes(axes[1].angle)) b.add(c.center + c.radius * axes[1].unit);
+  if (passes(axes[2].angle)) b.add(c.center + c.radius * axes[2].unit);
+  if (passes(axes[3].angle)) b.add(c.center + c.radius * axes[3].unit);
   return b;
 }
 
