@@ -21,8 +21,13 @@
 namespace cslice {
 namespace {
 
-// Sorted, each id once.
+// Sorted, each id once. Mostly the two contact segments meeting at a vertex: those directly.
 void sort_unique(std::vector<int>& ids) {
+  if (ids.size() == 2) {
+    if (ids[1] < ids[0]) std::swap(ids[0], ids[1]);
+    if (ids[0] == ids[1]) ids.pop_back();
+    return;
+  }
   small_sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
 }
