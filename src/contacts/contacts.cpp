@@ -228,11 +228,14 @@ class ContactBuilder {
 // Fixed features bucketed by the directions of their outward normals, so that each moving
 // feature meets only the fixed ones whose normals can oppose its own: the pairs that can
 // touch at all. Buckets split the circle evenly; an interval goes into every bucket it
-// overlaps (widened by the angular epsilon, as the interval tests are inclusive).
+// overlaps (widened by the angular epsilon, as the interval tests are inclusive). About one
+// bucket per fixed feature: on random star pairs (100 and 300 vertices, smooth and rough)
+// twice as many cost 1-3% more per one-shot slice, marking each interval in more buckets,
+// and half as many helped the rough ones but cost the smooth ones the false candidates.
 class NormalIndex {
  public:
   NormalIndex(const std::vector<ContactFeature>& fixed, double angular_eps)
-      : bucket_count_(std::clamp<size_t>(2 * fixed.size(), 64, 65536)), eps_(angular_eps) {
+      : bucket_count_(std::clamp<size_t>(fixed.size(), 64, 65536)), eps_(angular_eps) {
     width_ = kTwoPi / double(bucket_count_);
     ranges_.resize(fixed.size());
     seen_.assign((fixed.size() + 63) / 64, 0);
