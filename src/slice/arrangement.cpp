@@ -412,6 +412,27 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
   merge_coincident_edges(arr, s, eps);
 }
 
+// The half-edges grouped by origin, as group_by(2 * edges, vertices, origin) groups them
+// (each vertex's in increasing order), read edge by edge: half-edge 2e leaves u, 2e + 1
+// leaves v, with no choice by parity per half-edge.
+void group_outgoing(Arrangement& arr, std::vector<int>& fill) {
+  std::vector<int>& start = arr.outgoing_start;
+  std::vector<int>& order = arr.outgoing_edges;
+  const size_t edges = arr.edges.size(), vertices = arr.vertices.size();
+  start.assign(vertices + 1, 0);
+  for (size_t e = 0; e < edges; ++e) {
+    ++start[arr.edges[e].u + 1];
+    ++start[arr.edges[e].v + 1];
+  }
+  for (size_t g = 0; g < vertices; ++g) start[g + 1] += start[g];
+  order.resize(2 * edges);
+  fill.assign(start.begin(), start.end() - 1);
+  for (size_t e = 0; e < edges; ++e) {
+    order[fill[arr.edges[e].u]++] = int(2 * e);
+    order[fill[arr.edges[e].v]++] = int(2 * e + 1);
+  }
+}
+
 // Whether b, leaving a vertex just counterclockwise of a (by angle), really lies clockwise
 // of it. The decision follows the intersection step, so the arrangement stays consistent:
 // - curves it called tangent are ordered by curvature (their directions may differ by
@@ -465,9 +486,7 @@ double segment_angle(std::vector<Scratch::AngleMemo>& memo, int curve, bool forw
 // every later step reads the order cyclically (next around a face, sectors between
 // neighbours), so those are left in half-edge order without computing their angles.
 void order_outgoing(Arrangement& arr, Scratch& s, double eps, double angular_eps) {
-  group_by(
-      2 * arr.edges.size(), arr.vertices.size(), [&](size_t h) { return arr.origin(int(h)); },
-      arr.outgoing_start, arr.outgoing_edges, s.fill);
+  group_outgoing(arr, s.fill);
   std::vector<Direction>& dirs = s.dirs;  // by half-edge, those at vertices of degree >= 3
   dirs.resize(2 * arr.edges.size());
   const size_t vertices = arr.vertices.size();  // read once: the stores below could alias it
