@@ -573,23 +573,33 @@ void trace_cycles(Arrangement& arr, Scratch& s, TrigMemo* trig) {
     area[2 * e] = area_term(arr.edges[e].curve, trig);
     area[2 * e + 1] = -area[2 * e];
   }
+  // Every half-edge is listed once, in one cycle: the list is sized up front and the walk
+  // writes through plain pointers (a push_back per half-edge, and the cycle count reread
+  // after every store, cost more than the walk itself).
   arr.cycle_of.assign(n, -1);
-  arr.cycle_half_edges.reserve(n);
+  arr.cycle_half_edges.resize(n);
+  int* cycle_of = arr.cycle_of.data();
+  int* listed = arr.cycle_half_edges.data();
+  const int* next = arr.next.data();
+  const double* area_of = area.data();
+  int count = 0;
   for (size_t start = 0; start < n; ++start) {
-    if (arr.cycle_of[start] >= 0) continue;
+    if (cycle_of[start] >= 0) continue;
     ArrangementCycle cycle;
-    cycle.first = int(arr.cycle_half_edges.size());
+    cycle.first = count;
     cycle.component = s.comp[arr.origin(int(start))];
+    const int id = int(arr.cycles.size());
     int h = int(start);
     do {
-      arr.cycle_of[h] = int(arr.cycles.size());
-      arr.cycle_half_edges.push_back(h);
-      cycle.area += area[h];
-      h = arr.next[h];
-    } while (h != int(start) && arr.cycle_of[h] < 0);
-    cycle.count = int(arr.cycle_half_edges.size()) - cycle.first;
+      cycle_of[h] = id;
+      listed[count++] = h;
+      cycle.area += area_of[h];
+      h = next[h];
+    } while (h != int(start) && cycle_of[h] < 0);
+    cycle.count = count - cycle.first;
     arr.cycles.push_back(cycle);
   }
+  arr.cycle_half_edges.resize(size_t(count));
 }
 
 // Even-odd containment of many points (sorted by y) in one cycle at once: each curve toggles
