@@ -524,27 +524,31 @@ void order_outgoing(Arrangement& arr, Scratch& s, double eps, double angular_eps
 
 // Links each half-edge to the next around its left face: at its target, the half-edge just
 // clockwise of its twin.
+// Through plain pointers: the arrays are read and written per half-edge, and stores
+// through the vectors made every other array's data pointer and size be read again.
 void link_half_edges(Arrangement& arr, Scratch& s) {
   const size_t n = 2 * arr.edges.size();
-  std::vector<int>& position = s.position;
-  position.resize(n);
-  const int vertices = int(arr.vertices.size());  // read once: the stores below could alias it
-  for (int v = 0; v < vertices; ++v) {
-    const std::span<const int> out = arr.outgoing(v);
-    for (size_t i = 0; i < out.size(); ++i) position[out[i]] = int(i);
-  }
+  s.position.resize(n);
+  arr.next.resize(n);  // every entry is set below
+  int* position = s.position.data();
+  int* next = arr.next.data();
+  const int* start = arr.outgoing_start.data();
+  const int* outgoing = arr.outgoing_edges.data();
+  const int vertices = int(arr.vertices.size());
+  for (int v = 0; v < vertices; ++v)
+    for (int k = start[v]; k < start[v + 1]; ++k) position[outgoing[k]] = k - start[v];
   // The half-edge just clockwise of `twin` among those leaving w.
   auto clockwise_of = [&](int w, int twin) {
-    const int first = arr.outgoing_start[w], deg = arr.outgoing_start[w + 1] - first;
-    return arr.outgoing_edges[first + (position[twin] - 1 + deg) % deg];
+    const int first = start[w], deg = start[w + 1] - first;
+    return outgoing[first + (position[twin] - 1 + deg) % deg];
   };
-  arr.next.resize(n);  // every entry is set below
   // By edge: its forward half-edge ends at v, its backward one at u (no choice by parity).
-  const size_t edges = arr.edges.size();  // read once: the stores below could alias it
-  for (size_t e = 0; e < edges; ++e) {
+  const ArrangementEdge* edges = arr.edges.data();
+  const size_t count = arr.edges.size();
+  for (size_t e = 0; e < count; ++e) {
     const int h = int(2 * e);
-    arr.next[h] = clockwise_of(arr.edges[e].v, h + 1);
-    arr.next[h + 1] = clockwise_of(arr.edges[e].u, h);
+    next[h] = clockwise_of(edges[e].v, h + 1);
+    next[h + 1] = clockwise_of(edges[e].u, h);
   }
 }
 
