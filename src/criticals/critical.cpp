@@ -273,17 +273,18 @@ class Worker {
 
   void add_endpoint(int a, int end, int b, double theta) {
     if (!all_alive({a, b}, theta)) return reject();
-    const Vec2 x = ctx_.families[a].ends[end].at(theta);
-    // Both must hold; the end lying off b's segment is the common failure, so it goes first.
+    // One rotation (one sin/cos pair) for the end and both families' segments.
     const Transform turn(Pose{0.0, 0.0, theta});
+    const Vec2 x = ctx_.families[a].ends[end].at(turn);
+    // Both must hold; the end lying off b's segment is the common failure, so it goes first.
     if (!nearness(b, turn, x).on_segment || !nearness(a, turn, x).at_end) return reject();
     found.push_back({CriticalCondition::endpoint, {a, b, -1}, 2, theta, x});
   }
 
   void add_tangent(int a, int b, double theta) {
     if (!all_alive({a, b}, theta)) return reject();
-    const Vec2 x = tangent_point(ctx_.equations[a], ctx_.equations[b], theta);
     const Transform turn(Pose{0.0, 0.0, theta});
+    const Vec2 x = tangent_point(ctx_.equations[a], ctx_.equations[b], TrigAngle(turn));
     if (!nearness(a, turn, x).on_segment || !nearness(b, turn, x).on_segment) return reject();
     found.push_back({CriticalCondition::tangent, {a, b, -1}, 2, theta, x});
   }
@@ -291,13 +292,13 @@ class Worker {
   void add_triple(int a, int b, int c, double theta) {
     if (!all_alive({a, b, c}, theta)) return reject();
     const auto& eq = ctx_.equations;
-    const std::optional<Vec2> x = triple_point(eq[a], eq[b], eq[c], theta);
+    const Transform turn(Pose{0.0, 0.0, theta});
+    const std::optional<Vec2> x = triple_point(eq[a], eq[b], eq[c], TrigAngle(turn));
     if (!x) return reject();
     // Three curves through the end of one of them is an endpoint event, which its own
     // (better conditioned) equation finds; the triple equation there is near-degenerate
     // when two of the curves always share that end.
     bool at_an_end = false;
-    const Transform turn(Pose{0.0, 0.0, theta});
     for (int f : {a, b, c}) {
       const Nearness n = nearness(f, turn, *x);
       if (!n.on_segment) return reject();
@@ -433,7 +434,7 @@ class CriticalFinder {
       w->found.clear();
     }
     add_switches(found);
-    std::sort(found.begin(), found.end(), before);
+    sort_candidates(found);
     const std::vector<char> keep = screen(found);
     for (auto& w : workers_) add_stats(w->stats);
     kept_.reserve(size_t(std::count_if(keep.begin(), keep.end(), [](char k) { return k != 0; })));
@@ -485,6 +486,23 @@ class CriticalFinder {
       else
         w.solve_triple(triples[i - pairs.size()]);
     });
+  }
+
+  // Sorted by `before`. Candidates it does not order are alike in every field (count follows
+  // from the condition), so every sort gives the same sequence: sorting (theta, index) keys,
+  // which most comparisons settle at theta, and moving each candidate once is cheaper than
+  // sorting the candidates themselves.
+  static void sort_candidates(std::vector<Candidate>& found) {
+    std::vector<std::pair<double, std::uint32_t>> keys(found.size());
+    for (size_t i = 0; i < found.size(); ++i) keys[i] = {found[i].theta, std::uint32_t(i)};
+    std::sort(keys.begin(), keys.end(), [&](const auto& x, const auto& y) {
+      if (x.first != y.first) return x.first < y.first;
+      return before(found[x.second], found[y.second]);
+    });
+    std::vector<Candidate> sorted;
+    sorted.reserve(found.size());
+    for (const auto& k : keys) sorted.push_back(found[k.second]);
+    found = std::move(sorted);
   }
 
   // Condition 2 needs no equation: the switches are known per family.

@@ -122,8 +122,7 @@ EventEquation triple_equation(const FamilyEquation& a, const FamilyEquation& b,
   return {t1 + t2 + t3, norm_sum({&t1, &t2, &t3})};
 }
 
-Vec2 tangent_point(const FamilyEquation& a, const FamilyEquation& b, double angle) {
-  const TrigAngle theta(angle);  // one sin/cos pair for every evaluation
+Vec2 tangent_point(const FamilyEquation& a, const FamilyEquation& b, const TrigAngle& theta) {
   if (a.circle != b.circle) {
     const FamilyEquation& line = a.circle ? b : a;
     const FamilyEquation& circle = a.circle ? a : b;
@@ -138,8 +137,7 @@ Vec2 tangent_point(const FamilyEquation& a, const FamilyEquation& b, double angl
 }
 
 std::optional<Vec2> triple_point(const FamilyEquation& a, const FamilyEquation& b,
-                                 const FamilyEquation& c, double angle) {
-  const TrigAngle theta(angle);  // one sin/cos pair for every evaluation
+                                 const FamilyEquation& c, const TrigAngle& theta) {
   const FamilyEquation* e[3] = {&a, &b, &c};
   const FamilyEquation* g = nullptr;
   for (auto* x : e)

@@ -35,8 +35,9 @@ EventEquation triple_equation(const FamilyEquation& a, const FamilyEquation& b,
 
 // Where two curves touch at theta (the foot of the centre on the line, or the point on the
 // line of centres), or three meet (their common point), if it is well defined.
-Vec2 tangent_point(const FamilyEquation& a, const FamilyEquation& b, double theta);
+// Both take theta as its cosine and sine (one pair for every evaluation).
+Vec2 tangent_point(const FamilyEquation& a, const FamilyEquation& b, const TrigAngle& theta);
 std::optional<Vec2> triple_point(const FamilyEquation& a, const FamilyEquation& b,
-                                 const FamilyEquation& c, double theta);
+                                 const FamilyEquation& c, const TrigAngle& theta);
 
 }  // namespace cslice

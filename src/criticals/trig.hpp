@@ -22,6 +22,9 @@ namespace cslice {
 struct TrigAngle {
   double c = 1.0, s = 0.0;
   explicit TrigAngle(double theta) : c(std::cos(theta)), s(std::sin(theta)) {}
+  // The pair a rotation by theta already holds (Transform takes the same std::cos and
+  // std::sin): a caller with both pays for one.
+  explicit TrigAngle(const Transform& rotation) : c(rotation.c), s(rotation.s) {}
 };
 
 // A real Fourier polynomial of degree <= kMaxDegree, in Fourier form: products use the
