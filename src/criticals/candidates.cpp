@@ -255,14 +255,13 @@ const MovingPoint* shared_end(const ContactFamily& x, const ContactFamily& y, do
   return nullptr;
 }
 
+// rotation = the rotation to the bin's middle orientation (one per bin).
 Exclusion shared_end_exclusion(const ContactFamily& x, const ContactFamily& y,
-                               const BinScope& scope) {
+                               const BinScope& scope, const Transform& rotation) {
   const MovingPoint* ey = nullptr;
   const MovingPoint* ex = shared_end(x, y, scope.geometric, ey);
   if (!ex || x.is_point() || y.is_point()) return {};
   const double half = 0.5 * scope.binning.width;
-  const double mid = scope.binning.lower(scope.bin) + half;
-  const Transform rotation(Pose{0.0, 0.0, mid});
   const double sine =
       std::fabs(cross(direction_at(x, *ex, rotation), direction_at(y, *ey, rotation)));
   const double phi =
@@ -319,7 +318,11 @@ struct MeetingScratch {
 class BinMeeting {
  public:
   BinMeeting(const std::vector<BinEntry>& entries, const BinScope& scope, MeetingScratch& scratch)
-      : entries_(entries), scope_(scope), near_(scratch.near), shared_(scratch.shared) {
+      : entries_(entries),
+        scope_(scope),
+        middle_(Pose{0.0, 0.0, scope.binning.lower(scope.bin) + 0.5 * scope.binning.width}),
+        near_(scratch.near),
+        shared_(scratch.shared) {
     scratch.reset(entries.size());
   }
 
@@ -358,8 +361,8 @@ class BinMeeting {
     Neighbour& x = near_[i][n];
     if (x.shared == -2) {
       const auto& fam = *scope_.families;
-      const Exclusion ex =
-          shared_end_exclusion(fam[entries_[i].family], fam[entries_[x.index].family], scope_);
+      const Exclusion ex = shared_end_exclusion(fam[entries_[i].family],
+                                                fam[entries_[x.index].family], scope_, middle_);
       x.shared = -1;
       if (ex.radius > 0.0) {
         x.shared = int(shared_.size());
@@ -400,6 +403,7 @@ class BinMeeting {
 
   const std::vector<BinEntry>& entries_;
   const BinScope& scope_;
+  const Transform middle_;  // the rotation to the bin's middle, for every shared end there
   std::vector<std::vector<Neighbour>>& near_;  // the first entries_.size() lists
   std::vector<Shared>& shared_;
 };
