@@ -42,12 +42,13 @@ std::vector<std::vector<int>> alive_families_by_bin(const std::vector<ContactFam
 
 namespace {
 
-// A family's cover at theta, with the margin for orientations within half_width of it.
-BinEntry entry_at(const ContactFamily& family, int index, double theta, double half_width,
-                  double tolerance) {
+// A family's cover at the orientation `rotation` turns by, with the margin for orientations
+// within half_width of it.
+BinEntry entry_at(const ContactFamily& family, int index, const Transform& rotation,
+                  double half_width, double tolerance) {
   BinEntry e;
   e.family = index;
-  const FamilyCover cover = family_cover_within(family, theta, half_width);
+  const FamilyCover cover = family_cover_within(family, rotation, half_width);
   e.cover = cover.curve;
   e.margin = cover.drift * half_width + tolerance;
   e.box = bounding_box(e.cover).inflated(e.margin);
@@ -59,11 +60,11 @@ BinEntry entry_at(const ContactFamily& family, int index, double theta, double h
 std::vector<BinEntry> bin_entries(const std::vector<ContactFamily>& families,
                                   const std::vector<int>& alive, const Binning& binning, int bin,
                                   double tolerance) {
-  const double mid = binning.lower(bin) + 0.5 * binning.width;
+  const Transform middle(Pose{0.0, 0.0, binning.lower(bin) + 0.5 * binning.width});
   std::vector<BinEntry> entries;
   entries.reserve(alive.size());
   for (int i : alive)
-    entries.push_back(entry_at(families[i], i, mid, 0.5 * binning.width, tolerance));
+    entries.push_back(entry_at(families[i], i, middle, 0.5 * binning.width, tolerance));
   std::sort(entries.begin(), entries.end(), [](const BinEntry& x, const BinEntry& y) {
     return x.box.lo.x < y.box.lo.x || (x.box.lo.x == y.box.lo.x && x.family < y.family);
   });

@@ -128,11 +128,14 @@ bool alive_within(const ContactFamily& family, double lo, double hi) {
 }
 
 Curve family_cover(const ContactFamily& family, double theta) {
-  if (family.shape != FamilyShape::circle) {
-    const Transform rotation(Pose{0.0, 0.0, theta});
+  return family_cover(family, Transform(Pose{0.0, 0.0, theta}));
+}
+
+Curve family_cover(const ContactFamily& family, const Transform& rotation) {
+  const double theta = rotation.angle;
+  if (family.shape != FamilyShape::circle)
     return make_segment(family.ends[0].at(rotation), family.ends[1].at(rotation));
-  }
-  const Vec2 c = family.center.at(theta);
+  const Vec2 c = family.center.at(rotation);
   if (family.radius == 0.0) return make_segment(c, c);
   AngleInterval normals = family.fixed_normals;
   if (normals.span >= kTwoPi)
@@ -172,7 +175,15 @@ std::optional<AngleInterval> meeting(const AngleInterval& a, const AngleInterval
 }  // namespace
 
 FamilyCover family_cover_within(const ContactFamily& family, double theta, double half_width) {
-  const auto loose = [&] { return FamilyCover{family_cover(family, theta), family_drift(family)}; };
+  return family_cover_within(family, Transform(Pose{0.0, 0.0, theta}), half_width);
+}
+
+FamilyCover family_cover_within(const ContactFamily& family, const Transform& rotation,
+                                double half_width) {
+  const double theta = rotation.angle;
+  const auto loose = [&] {
+    return FamilyCover{family_cover(family, rotation), family_drift(family)};
+  };
   if (family.shape != FamilyShape::circle || family.radius == 0.0) return loose();
   // Followed at a fixed normal n, a contact point moves with the centre, and n stays in N_f;
   // followed at a fixed moving normal mu, it moves as the moving feature's point, and
@@ -185,7 +196,7 @@ FamilyCover family_cover_within(const ContactFamily& family, double theta, doubl
       centre ? meeting(family.fixed_normals, widened(facing, half_width))
              : meeting(widened(family.fixed_normals, half_width), facing);
   if (!normals || normals->span < 0.0) return loose();
-  const Vec2 c = family.center.at(theta);
+  const Vec2 c = family.center.at(rotation);
   const double drift = centre ? by_centre : by_point;
   if (is_full(*normals)) return {make_circle(c, family.radius), drift};
   const double start = normals->lo + (family.inward ? kPi : 0.0);

@@ -64,6 +64,8 @@ bool alive_within(const ContactFamily& family, double lo, double hi);
 // whole segment; for circles the arc of the fixed feature's normals (or, for a full fixed
 // circle, of the moving feature's), or the whole circle.
 Curve family_cover(const ContactFamily& family, double theta);
+// The same for rotation = Transform(Pose{0, 0, theta}): one sin/cos pair for many families.
+Curve family_cover(const ContactFamily& family, const Transform& rotation);
 // How far (per radian of theta) any point of the cover can move: no point of the family's
 // contact segments at theta + d lies farther than |d| times this from the cover at theta.
 double family_drift(const ContactFamily& family);
@@ -80,6 +82,9 @@ struct FamilyCover {
   double drift = 0.0;
 };
 FamilyCover family_cover_within(const ContactFamily& family, double theta, double half_width);
+// The same for rotation = Transform(Pose{0, 0, theta}) (as family_cover).
+FamilyCover family_cover_within(const ContactFamily& family, const Transform& rotation,
+                                double half_width);
 
 // The family's curve as an implicit equation g(X, theta) = w |X|^2 + a(theta) . X + b(theta)
 // (w = 0 for lines, whose normal `a` is a unit vector; w = 1 for circles).
