@@ -369,7 +369,7 @@ class Worker {
     // those are all blocked.
     std::vector<Vec2>& probes = probes_;  // scratch, kept with its capacity
     probes.clear();
-    const Transform rotation(Pose{0.0, 0.0, c.theta});
+    const Transform& rotation = memo_turn_;  // segments_at() just turned to c.theta
     for (const MovingPoint& e : ctx_.families[family].ends) probes.push_back(e.at(rotation));
     for (const ContactSegment& s : own) probes.push_back(point_at(s.curve, 0.5));
     if (any_free(probes, c.theta)) return true;
