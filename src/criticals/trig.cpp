@@ -36,9 +36,9 @@ double Trig::norm() const {
 
 namespace {
 // f at the angle whose cosine and sine are c1, s1: harmonics by the rotation recurrence.
-double evaluate_at(const Trig& f, double c1, double s1) {
+// n = f.degree(), for a caller evaluating f many times.
+double evaluate_at(const Trig& f, int n, double c1, double s1) {
   double c = 1.0, s = 0.0, v = f.a[0];
-  const int n = f.degree();
   for (int j = 1; j <= n; ++j) {
     const double cn = c * c1 - s * s1;
     s = s * c1 + c * s1;
@@ -46,6 +46,9 @@ double evaluate_at(const Trig& f, double c1, double s1) {
     v += f.a[j] * c + f.b[j] * s;
   }
   return v;
+}
+double evaluate_at(const Trig& f, double c1, double s1) {
+  return evaluate_at(f, f.degree(), c1, s1);
 }
 }  // namespace
 
@@ -456,11 +459,12 @@ constexpr double kMaxPolishStep = 1e-3;
 // Newton on f' from a near-double root: the extremum itself, which f' crosses simply.
 double polish_extremum(const Trig& f, double theta) {
   const Trig d1 = f.derivative(), d2 = d1.derivative();
+  const int n1 = d1.degree(), n2 = d2.degree();
   for (int it = 0; it < 8; ++it) {
     const double c1 = std::cos(theta), s1 = std::sin(theta);  // one pair for both
-    const double s = evaluate_at(d2, c1, s1);
+    const double s = evaluate_at(d2, n2, c1, s1);
     if (s == 0.0) break;
-    const double step = evaluate_at(d1, c1, s1) / s;
+    const double step = evaluate_at(d1, n1, c1, s1) / s;
     if (!std::isfinite(step) || std::fabs(step) > kMaxPolishStep) break;
     theta -= step;
     if (std::fabs(step) <= std::numeric_limits<double>::epsilon()) break;
@@ -471,12 +475,13 @@ double polish_extremum(const Trig& f, double theta) {
 // Newton on f from a simple root found in t; stops when a step stops shrinking.
 double polish_root(const Trig& f, double theta) {
   const Trig d1 = f.derivative();
+  const int n = f.degree(), n1 = d1.degree();
   double last = std::numeric_limits<double>::infinity();
   for (int it = 0; it < 6; ++it) {
     const double c1 = std::cos(theta), s1 = std::sin(theta);  // one pair for both
-    const double s = evaluate_at(d1, c1, s1);
+    const double s = evaluate_at(d1, n1, c1, s1);
     if (s == 0.0) break;
-    const double step = evaluate_at(f, c1, s1) / s;
+    const double step = evaluate_at(f, n, c1, s1) / s;
     if (!std::isfinite(step) || std::fabs(step) >= last || std::fabs(step) > kMaxPolishStep) break;
     theta -= step;
     last = std::fabs(step);
@@ -535,23 +540,28 @@ ChartStretches chart_stretches(double centre, const AngleWindow* windows, int co
   return c;
 }
 
-// The harmonics left after dropping cancellation residue; false when no root can exist.
-bool solvable(const Trig& raw, double zero_norm, double touch, Trig& f, TrigRoots& r) {
-  const double n = raw.norm();
+// Drops f's cancellation residue in place; false when no root can exist.
+bool solvable(Trig& f, double zero_norm, double touch, TrigRoots& r) {
+  const double n = f.norm();
   if (n <= zero_norm) {
     r.identically_zero = true;
     return false;
   }
   // Harmonics that cancelled down to round-off (cos^2 + sin^2 in |P + R Q|^2) would raise
   // the degree for nothing.
-  // Above raw.top every harmonic is zero already.
-  f = raw;
+  // Above f.top every harmonic is zero already.
   const double cancelled = std::max(kCancelledHarmonic * n, kNegligibleOfZero * zero_norm);
-  for (int j = 1; j <= f.top; ++j)
-    if (harmonic_size(f, j) <= cancelled) f.a[j] = f.b[j] = 0.0;
-  // No root when the constant term outweighs every harmonic together.
+  // No root when the constant term outweighs every harmonic together (a dropped one adds 0).
   double amplitude = 0.0;
-  for (int j = 1; j <= f.top; ++j) amplitude += harmonic_size(f, j);
+  for (int j = 1; j <= f.top; ++j) {
+    const double size = harmonic_size(f, j);
+    if (size <= cancelled) {
+      f.a[j] = f.b[j] = 0.0;
+      amplitude += 0.0;
+    } else {
+      amplitude += size;
+    }
+  }
   return !(std::fabs(f.a[0]) > amplitude * (1.0 + touch) + touch * n);
 }
 
@@ -593,8 +603,8 @@ TrigRoots trig_roots(const Trig& raw, double zero_norm, double touch, double mer
 TrigRoots trig_roots_within(const Trig& raw, double zero_norm, double touch, double merge_angle,
                             const AngleWindow* windows, int window_count) {
   TrigRoots r;
-  Trig f;
-  if (!solvable(raw, zero_norm, touch, f, r)) return r;
+  Trig f = raw;
+  if (!solvable(f, zero_norm, touch, r)) return r;
   if (f.degree() == 1) {
     first_harmonic_roots(f, touch, merge_angle, r);
     return r;  // every return names r, which is then built in place
