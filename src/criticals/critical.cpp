@@ -59,7 +59,9 @@ struct Candidate {
 bool before(const Candidate& x, const Candidate& y) {
   if (x.theta != y.theta) return x.theta < y.theta;
   if (x.condition != y.condition) return x.condition < y.condition;
-  if (x.families != y.families) return x.families < y.families;
+  // Element by element: std::array's comparisons call memcmp.
+  for (int i = 0; i < 3; ++i)
+    if (x.families[i] != y.families[i]) return x.families[i] < y.families[i];
   if (x.at.x != y.at.x) return x.at.x < y.at.x;
   return x.at.y < y.at.y;
 }
@@ -118,13 +120,35 @@ struct Context {
 };
 
 // A configuration cell of screening: configurations in one cell get one placement test.
-using ProbeKey = std::array<long long, 3>;
+// Compared field by field (an array's comparisons call memcmp), in the order of the fields.
+struct ProbeKey {
+  long long theta = 0, x = 0, y = 0;
+  friend bool operator==(const ProbeKey& p, const ProbeKey& q) {
+    return p.theta == q.theta && p.x == q.x && p.y == q.y;
+  }
+  friend bool operator<(const ProbeKey& p, const ProbeKey& q) {
+    if (p.theta != q.theta) return p.theta < q.theta;
+    if (p.x != q.x) return p.x < q.x;
+    return p.y < q.y;
+  }
+};
 using ProbeAnswers = std::vector<std::pair<ProbeKey, bool>>;  // sorted by key, blocked or not
+
+// std::llround, without the library call for the values met here: a truncation is exact
+// below 2^52 in magnitude, and so is the fraction it leaves, which rounds half away from zero.
+long long round_to_integer(double v) {
+  if (!(std::fabs(v) < 0x1p52)) return std::llround(v);  // integers already, or out of range
+  const long long t = static_cast<long long>(v);
+  const double fraction = v - static_cast<double>(t);
+  if (fraction >= 0.5) return t + 1;
+  if (fraction <= -0.5) return t - 1;
+  return t;
+}
 
 ProbeKey probe_key(const Pair& pair, Vec2 x, double theta) {
   const double cell = pair.tol.criticality;
-  return {std::llround(theta / pair.tol.critical_angle), std::llround(x.x / cell),
-          std::llround(x.y / cell)};
+  return {round_to_integer(theta / pair.tol.critical_angle), round_to_integer(x.x / cell),
+          round_to_integer(x.y / cell)};
 }
 
 bool key_before(const std::pair<ProbeKey, bool>& entry, const ProbeKey& key) {
