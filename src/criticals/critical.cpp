@@ -611,8 +611,12 @@ class CriticalFinder {
 
   void group() {
     // Stable: candidates were sorted by everything, so equal wrapped angles keep that order.
-    std::stable_sort(kept_.begin(), kept_.end(),
-                     [](const Criticality& a, const Criticality& b) { return a.theta < b.theta; });
+    // They were sorted by angle too, so only an angle that wrapping moved calls for a sort.
+    const auto by_angle = [](const Criticality& a, const Criticality& b) {
+      return a.theta < b.theta;
+    };
+    if (!std::is_sorted(kept_.begin(), kept_.end(), by_angle))
+      std::stable_sort(kept_.begin(), kept_.end(), by_angle);
     set_.stats.criticalities = long(kept_.size());
     for (const Criticality& k : kept_) ++set_.counts[int(k.condition)];
     const double gap = ctx_.pair.tol.critical_angle;
@@ -628,6 +632,7 @@ class CriticalFinder {
     for (size_t g = 0; g < starts.size(); ++g) {
       const size_t end = g + 1 < starts.size() ? starts[g + 1] : wrapped;
       CriticalOrientation o;
+      o.criticalities.reserve(end - starts[g] + (g == 0 ? kept_.size() - wrapped : 0));
       double lo = kept_[starts[g]].theta, hi = kept_[end - 1].theta;
       if (g == 0 && wrapped < kept_.size()) {
         lo = kept_[wrapped].theta - kTwoPi;
