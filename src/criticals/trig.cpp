@@ -600,8 +600,36 @@ TrigRoots trig_roots(const Trig& raw, double zero_norm, double touch, double mer
   return trig_roots_within(raw, zero_norm, touch, merge_angle, nullptr, 0);
 }
 
+namespace {
+
+// trig_roots_within for an equation of degree 1 or less (top <= 1: every pair equation), the
+// same steps without copying it: solvable()'s tests on harmonics 0 and 1, then the closed form,
+// or no root when the harmonic is dropped (the general path's polynomial is then a constant).
+TrigRoots first_harmonic_only(const Trig& f, double zero_norm, double touch, double merge_angle) {
+  TrigRoots r;
+  const double n = f.norm();
+  if (n <= zero_norm) {
+    r.identically_zero = true;
+    return r;
+  }
+  const double cancelled = std::max(kCancelledHarmonic * n, kNegligibleOfZero * zero_norm);
+  double amplitude = 0.0;
+  bool kept = false;
+  if (f.top == 1) {
+    const double size = harmonic_size(f, 1);
+    kept = !(size <= cancelled);
+    amplitude += kept ? size : 0.0;
+  }
+  if (std::fabs(f.a[0]) > amplitude * (1.0 + touch) + touch * n || !kept) return r;
+  first_harmonic_roots(f, touch, merge_angle, r);
+  return r;
+}
+
+}  // namespace
+
 TrigRoots trig_roots_within(const Trig& raw, double zero_norm, double touch, double merge_angle,
                             const AngleWindow* windows, int window_count) {
+  if (raw.top <= 1) return first_harmonic_only(raw, zero_norm, touch, merge_angle);
   TrigRoots r;
   Trig f = raw;
   if (!solvable(f, zero_norm, touch, r)) return r;
