@@ -256,9 +256,10 @@ struct Poly {
   int size = 0;                                // degree + 1; 0 for the zero polynomial
 };
 
-// Roots found in one interval: a polynomial of degree d has at most d.
+// Roots found in one interval: a polynomial of degree d has at most d. Only the first
+// `count` are ever read (lists are filled in place, never copied): the rest stay unset.
 struct RootList {
-  std::array<double, kMaxPolyDegree + 1> t{};
+  std::array<double, kMaxPolyDegree + 1> t;
   int count = 0;
   void push(double v) {
     if (count < int(t.size())) t[count++] = v;
