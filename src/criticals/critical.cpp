@@ -273,7 +273,7 @@ class Worker {
   }
 
   // How near x lies to the family's contact segments at theta, and to their ends: one
-  // rebuild of the segments answers both.
+  // rebuild of the segments answers both (a triple needs both; a pair one of each family).
   struct Nearness {
     bool on_segment = false;
     bool at_end = false;
@@ -286,6 +286,22 @@ class Worker {
       n.at_end |= std::min(distance(s.curve.from, x), distance(s.curve.to, x)) <= tol;
     }
     return n;
+  }
+  // Each half of nearness() alone, stopping at the first segment that settles it (the
+  // distance to an arc is the costly half, and an end needs none).
+  bool on_segment(int family, const Transform& turn, Vec2 x) {
+    const double tol = ctx_.pair.tol.criticality;
+    const auto& segments = segments_of(family, turn, scratch_);
+    return std::any_of(segments.begin(), segments.end(), [&](const ContactSegment& s) {
+      return distance_to_curve(s.curve, x) <= tol;
+    });
+  }
+  bool at_end(int family, const Transform& turn, Vec2 x) {
+    const double tol = ctx_.pair.tol.criticality;
+    const auto& segments = segments_of(family, turn, scratch_);
+    return std::any_of(segments.begin(), segments.end(), [&](const ContactSegment& s) {
+      return std::min(distance(s.curve.from, x), distance(s.curve.to, x)) <= tol;
+    });
   }
 
   // A cheap first test: every family involved exists at theta.
@@ -301,7 +317,7 @@ class Worker {
     const Transform turn(Pose{0.0, 0.0, theta});
     const Vec2 x = ctx_.families[a].ends[end].at(turn);
     // Both must hold; the end lying off b's segment is the common failure, so it goes first.
-    if (!nearness(b, turn, x).on_segment || !nearness(a, turn, x).at_end) return reject();
+    if (!on_segment(b, turn, x) || !at_end(a, turn, x)) return reject();
     found.push_back({CriticalCondition::endpoint, {a, b, -1}, 2, theta, x});
   }
 
@@ -309,7 +325,7 @@ class Worker {
     if (!all_alive({a, b}, theta)) return reject();
     const Transform turn(Pose{0.0, 0.0, theta});
     const Vec2 x = tangent_point(ctx_.equations[a], ctx_.equations[b], TrigAngle(turn));
-    if (!nearness(a, turn, x).on_segment || !nearness(b, turn, x).on_segment) return reject();
+    if (!on_segment(a, turn, x) || !on_segment(b, turn, x)) return reject();
     found.push_back({CriticalCondition::tangent, {a, b, -1}, 2, theta, x});
   }
 
