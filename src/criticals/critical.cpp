@@ -19,6 +19,7 @@
 #include <tbb/task_arena.h>
 #include <algorithm>
 #include <bit>
+#include <climits>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -155,9 +156,11 @@ bool key_before(const std::pair<ProbeKey, bool>& entry, const ProbeKey& key) {
   return entry.first < key;
 }
 
-std::optional<bool> find_answer(const ProbeAnswers& answers, const ProbeKey& key) {
-  auto it = std::lower_bound(answers.begin(), answers.end(), key, key_before);
-  if (it != answers.end() && it->first == key) return it->second;
+// The answer for key among [first, last), sorted.
+std::optional<bool> find_answer(ProbeAnswers::const_iterator first,
+                                ProbeAnswers::const_iterator last, const ProbeKey& key) {
+  auto it = std::lower_bound(first, last, key, key_before);
+  if (it != last && it->first == key) return it->second;
   return std::nullopt;
 }
 
@@ -200,6 +203,7 @@ class Worker {
   // settled by their cheap probes, or have no overlapping segments.
   void start_bin(int bin, const ProbeAnswers& tested) {
     tested_ = &tested;
+    range_known_ = false;
     cache_.clear();
     bin_ = bin;
     entries_.reset();
@@ -359,7 +363,19 @@ class Worker {
   // complete before any probe runs, so the answers do not depend on the order either.
   bool blocked_cached(Vec2 x, double theta) {
     const ProbeKey key = probe_key(ctx_.pair, x, theta);
-    if (const std::optional<bool> known = find_answer(*tested_, key)) return *known;
+    // A candidate's probes share its orientation: the point answers of that orientation cell
+    // are found once, and each probe looks among those few.
+    if (!range_known_ || range_theta_ != key.theta) {
+      range_known_ = true;
+      range_theta_ = key.theta;
+      range_first_ = std::lower_bound(tested_->begin(), tested_->end(),
+                                      ProbeKey{key.theta, LLONG_MIN, LLONG_MIN}, key_before);
+      for (range_last_ = range_first_;
+           range_last_ != tested_->end() && range_last_->first.theta == key.theta;)
+        ++range_last_;
+    }
+    if (const std::optional<bool> known = find_answer(range_first_, range_last_, key))
+      return *known;
     // A sorted vector: a bin's probes are few, and a map would allocate per entry.
     auto it = std::lower_bound(cache_.begin(), cache_.end(), key, key_before);
     if (it != cache_.end() && it->first == key) return it->second;
@@ -454,6 +470,10 @@ class Worker {
   std::vector<double> cuts_;              // add_piece_probes()
   ProbeAnswers cache_;                    // sorted by key
   const ProbeAnswers* tested_ = nullptr;  // the point criticalities' answers
+  // Those of one orientation cell, range_theta_ (blocked_cached()), once found.
+  bool range_known_ = false;
+  long long range_theta_ = 0;
+  ProbeAnswers::const_iterator range_first_, range_last_;
   int bin_ = 0;
   std::optional<std::vector<BinEntry>> entries_;  // of bin_, when built
 };
