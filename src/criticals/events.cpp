@@ -150,8 +150,13 @@ std::optional<Vec2> triple_point(const FamilyEquation& a, const FamilyEquation& 
   int count = 0;
   for (auto* x : e) {
     if (x == g) continue;
-    const Linear l = g ? minus_circle(*x, *g) : Linear{x->a.x, x->a.y, x->b};
-    rows[count++] = {l.ax(theta), l.ay(theta), l.b(theta)};
+    // minus_circle() evaluated, without building it.
+    if (g && x->circle)
+      rows[count++] = {evaluate_difference(x->a.x, g->a.x, theta),
+                       evaluate_difference(x->a.y, g->a.y, theta),
+                       evaluate_difference(x->b, g->b, theta)};
+    else
+      rows[count++] = {x->a.x(theta), x->a.y(theta), x->b(theta)};
   }
   std::optional<Vec2> best;
   double best_det = 0.0;

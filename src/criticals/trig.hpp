@@ -70,6 +70,8 @@ TrigVec operator-(const TrigVec& u, const TrigVec& v);
 TrigVec operator*(const Trig& s, const TrigVec& v);
 Trig dot(const TrigVec& u, const TrigVec& v);
 Trig cross(const TrigVec& u, const TrigVec& v);
+// (f - g)(theta), bit for bit, without building f - g.
+double evaluate_difference(const Trig& f, const Trig& g, const TrigAngle& theta);
 Vec2 evaluate(const TrigVec& v, double theta);
 Vec2 evaluate(const TrigVec& v, const TrigAngle& theta);
 
