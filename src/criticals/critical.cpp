@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <bit>
 #include <climits>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -549,19 +550,32 @@ class CriticalFinder {
   }
 
   // Sorted by `before`. Candidates it does not order are alike in every field (count follows
-  // from the condition), so every sort gives the same sequence: sorting (theta, index) keys,
-  // which most comparisons settle at theta, and moving each candidate once is cheaper than
-  // sorting the candidates themselves.
+  // from the condition), so every sort gives the same sequence: the angles are spread over
+  // the turn, so the keys go into buckets by angle (a monotone map), each bucket sorted by
+  // `before`, and each candidate moved once.
   static void sort_candidates(std::vector<Candidate>& found) {
-    std::vector<std::pair<double, std::uint32_t>> keys(found.size());
-    for (size_t i = 0; i < found.size(); ++i) keys[i] = {found[i].theta, std::uint32_t(i)};
-    std::sort(keys.begin(), keys.end(), [&](const auto& x, const auto& y) {
-      if (x.first != y.first) return x.first < y.first;
-      return before(found[x.second], found[y.second]);
-    });
+    const size_t n = found.size(), buckets = std::max<size_t>(1, n / 4);
+    const double per_radian = double(buckets) / kTwoPi;
+    std::vector<std::uint32_t> start(buckets + 1, 0), order(n);
+    std::vector<std::uint32_t> bucket(n);
+    for (size_t i = 0; i < n; ++i) {
+      const double t = found[i].theta;
+      if (std::isnan(t)) return std::sort(found.begin(), found.end(), before);
+      const double b = std::floor((t + kPi) * per_radian);  // monotone in t
+      bucket[i] = std::uint32_t(std::clamp(b, 0.0, double(buckets - 1)));
+      ++start[bucket[i] + 1];
+    }
+    for (size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
+    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+    for (size_t i = 0; i < n; ++i) order[next[bucket[i]]++] = std::uint32_t(i);
+    const auto by_candidate = [&](std::uint32_t x, std::uint32_t y) {
+      return before(found[x], found[y]);
+    };
+    for (size_t b = 0; b < buckets; ++b)
+      std::sort(order.begin() + start[b], order.begin() + start[b + 1], by_candidate);
     std::vector<Candidate> sorted;
-    sorted.reserve(found.size());
-    for (const auto& k : keys) sorted.push_back(found[k.second]);
+    sorted.reserve(n);
+    for (std::uint32_t i : order) sorted.push_back(found[i]);
     found = std::move(sorted);
   }
 
