@@ -428,15 +428,6 @@ void MeetingTask::add_run(int first, int last) {
   }
 }
 
-bool MeetingTask::near(const Binning& binning, double theta, double slack) const {
-  for (int r = 0; r < run_count; ++r) {
-    const double d = ccw_turn(binning.lower(runs[r][0]), theta);
-    const double span = (runs[r][1] - runs[r][0] + 1) * binning.width;
-    if (d <= span + slack || d >= kTwoPi - slack) return true;
-  }
-  return false;
-}
-
 int MeetingTask::windows(const Binning& binning, double slack,
                          std::array<AngleWindow, 2>& out) const {
   for (int r = 0; r < run_count; ++r) {

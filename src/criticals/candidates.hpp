@@ -90,8 +90,16 @@ struct MeetingTask {
   // Bins arrive in ascending order.
   void add_run(int first, int last);
   void add_bin(int bin) { add_run(bin, bin); }
-  // Whether theta lies in one of the runs, widened by `slack` radians.
-  bool near(const Binning& binning, double theta, double slack) const;
+  // Whether theta lies in one of the runs, widened by `slack` radians. Inline: it is asked of
+  // every root.
+  bool near(const Binning& binning, double theta, double slack) const {
+    for (int r = 0; r < run_count; ++r) {
+      const double d = ccw_turn(binning.lower(runs[r][0]), theta);
+      const double span = (runs[r][1] - runs[r][0] + 1) * binning.width;
+      if (d <= span + slack || d >= kTwoPi - slack) return true;
+    }
+    return false;
+  }
   // The runs as windows of orientations, each widened by twice `slack` (once for `near`,
   // once for a root's own round-off): roots outside them would all be culled.
   int windows(const Binning& binning, double slack, std::array<AngleWindow, 2>& out) const;
