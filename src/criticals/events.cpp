@@ -53,25 +53,18 @@ EventEquation distance_equation(const MovingPoint& x, const MovingPoint& centre,
   return first_harmonic(square - r * r, along, across, largest(square, along, across) + r * r);
 }
 
-// The coefficients of n . (X - p) for a line of normal n through p, the moving point X
-// standing for A + R B (see above).
-std::array<double, 3> line_terms(const FamilyEquation& line, Vec2 a, Vec2 b) {
-  const Vec2 v = line.unit_normal;
-  if (line.turning) return {dot(v, b), dot(a, v), -cross(a, v)};
-  return {dot(v, a), dot(v, b), -cross(v, b)};
-}
-
-// n . (X - p) - offset. Its magnitude is that of the difference, or (`parts`) of n . X and
-// n . p apart: an end on a line compares two points each given in its own frame, and a
-// permanent coincidence there cancels only to the round-off of their own sizes.
+// n . (X - p) - offset, from the coefficients of n . (X - p) for a line of normal n through
+// p, the moving point X standing for A + R B (see above; FamilyEquation::line_terms). Its
+// magnitude is that of the difference, or (`parts`) of n . X and n . p apart: an end on a
+// line compares two points each given in its own frame, and a permanent coincidence there
+// cancels only to the round-off of their own sizes.
 EventEquation line_equation(const MovingPoint& x, const FamilyEquation& line, double offset,
                             bool parts) {
-  const auto [fixed, along, across] = line_terms(line, x.p - line.anchor.p, x.q - line.anchor.q);
+  const auto [fixed, along, across] = line.line_terms(x.p - line.anchor.p, x.q - line.anchor.q);
   double magnitude = largest(fixed, along, across);
   if (parts) {
-    const auto [x0, x1, x2] = line_terms(line, x.p, x.q);
-    const auto [p0, p1, p2] = line_terms(line, line.anchor.p, line.anchor.q);
-    magnitude = largest(x0, x1, x2) + largest(p0, p1, p2);
+    const auto [x0, x1, x2] = line.line_terms(x.p, x.q);
+    magnitude = largest(x0, x1, x2) + line.anchor_size;
   }
   return first_harmonic(fixed - offset, along, across, magnitude + std::fabs(offset));
 }

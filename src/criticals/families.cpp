@@ -228,6 +228,8 @@ FamilyEquation family_equation(const ContactFamily& family) {
   }
   e.a = e.normal;
   e.b = -dot(e.normal, e.point);
+  const auto [p0, p1, p2] = e.line_terms(e.anchor.p, e.anchor.q);
+  e.anchor_size = std::max({std::fabs(p0), std::fabs(p1), std::fabs(p2)});
   return e;
 }
 

@@ -3,6 +3,7 @@
 // P + R(theta) Q (docs/criticals.md, "Contact families"), alive on one interval of theta.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "contacts/contact_features.hpp"
@@ -100,6 +101,17 @@ struct FamilyEquation {
   MovingPoint anchor;
   Vec2 unit_normal;
   bool turning = false;
+  // Lines: the coefficients (constant, cos, sin) of n . X for a moving point X = P + R Q given
+  // as a = P, b = Q (or as differences of such), and the largest of those of the anchor (an end's
+  // equation weighs its own terms against them: the same for every end, so found once).
+  // R v . (A + R B) = v . B + (A . v) cos - (A x v) sin for a turning normal R v, and
+  // m . (A + R B) = m . A + (m . B) cos - (m x B) sin for a fixed one (events.cpp).
+  std::array<double, 3> line_terms(Vec2 a, Vec2 b) const {
+    const Vec2 v = unit_normal;
+    if (turning) return {dot(v, b), dot(a, v), -cross(a, v)};
+    return {dot(v, a), dot(v, b), -cross(v, b)};
+  }
+  double anchor_size = 0.0;
 };
 FamilyEquation family_equation(const ContactFamily& family);
 
