@@ -561,29 +561,44 @@ ChartStretches chart_stretches(double centre, const AngleWindow* windows, int co
   return c;
 }
 
+// What solvable() reads of f before changing it: its norm, whether that is zero to the
+// equation's accuracy, and the size below which a harmonic is cancellation residue (cos^2 +
+// sin^2 in |P + R Q|^2 cancels down to round-off, and would raise the degree for nothing).
+struct HarmonicScreen {
+  double norm = 0.0, cancelled = 0.0;
+  bool identically_zero = false;
+};
+
+HarmonicScreen screen_harmonics(const Trig& f, double zero_norm) {
+  HarmonicScreen s;
+  s.norm = f.norm();
+  s.identically_zero = s.norm <= zero_norm;
+  s.cancelled = std::max(kCancelledHarmonic * s.norm, kNegligibleOfZero * zero_norm);
+  return s;
+}
+
+// No root when the constant term outweighs every kept harmonic together.
+bool constant_outweighs(const Trig& f, double amplitude, double touch, double norm) {
+  return std::fabs(f.a[0]) > amplitude * (1.0 + touch) + touch * norm;
+}
+
 // Drops f's cancellation residue in place; false when no root can exist.
 bool solvable(Trig& f, double zero_norm, double touch, TrigRoots& r) {
-  const double n = f.norm();
-  if (n <= zero_norm) {
+  const HarmonicScreen s = screen_harmonics(f, zero_norm);
+  if (s.identically_zero) {
     r.identically_zero = true;
     return false;
   }
-  // Harmonics that cancelled down to round-off (cos^2 + sin^2 in |P + R Q|^2) would raise
-  // the degree for nothing.
   // Above f.top every harmonic is zero already.
-  const double cancelled = std::max(kCancelledHarmonic * n, kNegligibleOfZero * zero_norm);
-  // No root when the constant term outweighs every harmonic together (a dropped one adds 0).
   double amplitude = 0.0;
   for (int j = 1; j <= f.top; ++j) {
     const double size = harmonic_size(f, j);
-    if (size <= cancelled) {
+    if (size <= s.cancelled)
       f.a[j] = f.b[j] = 0.0;
-      amplitude += 0.0;
-    } else {
+    else
       amplitude += size;
-    }
   }
-  return !(std::fabs(f.a[0]) > amplitude * (1.0 + touch) + touch * n);
+  return !constant_outweighs(f, amplitude, touch, s.norm);
 }
 
 // Roots above degree 1: on two charts, each |t| <= 1, theta in [-pi/2, pi/2] directly and
@@ -628,20 +643,14 @@ namespace {
 // or no root when the harmonic is dropped (the general path's polynomial is then a constant).
 TrigRoots first_harmonic_only(const Trig& f, double zero_norm, double touch, double merge_angle) {
   TrigRoots r;
-  const double n = f.norm();
-  if (n <= zero_norm) {
+  const HarmonicScreen s = screen_harmonics(f, zero_norm);
+  if (s.identically_zero) {
     r.identically_zero = true;
     return r;
   }
-  const double cancelled = std::max(kCancelledHarmonic * n, kNegligibleOfZero * zero_norm);
-  double amplitude = 0.0;
-  bool kept = false;
-  if (f.top == 1) {
-    const double size = harmonic_size(f, 1);
-    kept = !(size <= cancelled);
-    amplitude += kept ? size : 0.0;
-  }
-  if (std::fabs(f.a[0]) > amplitude * (1.0 + touch) + touch * n || !kept) return r;
+  const double size = f.top == 1 ? harmonic_size(f, 1) : 0.0;
+  const bool kept = f.top == 1 && !(size <= s.cancelled);
+  if (!kept || constant_outweighs(f, size, touch, s.norm)) return r;
   first_harmonic_roots(f, touch, merge_angle, r);
   return r;
 }
