@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <tuple>
+
+#include "criticals/bucket_sort.hpp"
 
 namespace cslice {
 
@@ -446,28 +449,14 @@ bool task_before(const MeetingTask& x, const MeetingTask& y) {
 }
 }  // namespace
 
-namespace {
-// std::sort(candidates), in two steps: a counting sort by the first family, then each run of
-// one first family sorted (the order is total, and alike candidates are equal: the same
-// sequence), which halves the comparisons of one sort over all.
-void sort_by_families(std::vector<MeetingCandidate>& candidates) {
+std::vector<MeetingTask> group_candidates(std::vector<MeetingCandidate>& candidates) {
+  // Sorted by the first family, then within each: half the comparisons of one sort over all
+  // (the order is total, so the same sequence).
   int families = 0;
   for (const MeetingCandidate& m : candidates) families = std::max(families, m.a + 1);
-  std::vector<size_t> start(size_t(families) + 1, 0);
-  for (const MeetingCandidate& m : candidates) ++start[size_t(m.a) + 1];
-  for (size_t f = 0; f < size_t(families); ++f) start[f + 1] += start[f];
-  std::vector<MeetingCandidate> sorted(candidates.size());
-  std::vector<size_t> next(start.begin(), start.end() - 1);
-  for (const MeetingCandidate& m : candidates) sorted[next[size_t(m.a)]++] = m;
-  for (size_t f = 0; f < size_t(families); ++f)
-    std::sort(sorted.begin() + std::ptrdiff_t(start[f]),
-              sorted.begin() + std::ptrdiff_t(start[f + 1]));
-  candidates = std::move(sorted);
-}
-}  // namespace
-
-std::vector<MeetingTask> group_candidates(std::vector<MeetingCandidate>& candidates) {
-  sort_by_families(candidates);
+  bucket_sort(
+      candidates, size_t(families), [](const MeetingCandidate& m) { return size_t(m.a); },
+      std::less<MeetingCandidate>());
   std::vector<MeetingTask> tasks;
   for (const MeetingCandidate& m : candidates) {
     if (tasks.empty() || !same_family_set(tasks.back(), m)) tasks.push_back({m.a, m.b, m.c});

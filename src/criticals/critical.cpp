@@ -25,6 +25,7 @@
 #include <memory>
 #include <optional>
 
+#include "criticals/bucket_sort.hpp"
 #include "criticals/candidates.hpp"
 #include "criticals/events.hpp"
 #include "cslice/classify.hpp"
@@ -277,6 +278,14 @@ class Worker {
     return memo_[family];
   }
 
+  // The two tests of nearness, per contact segment: x lies on it, or at one of its ends.
+  static bool passes_near(const ContactSegment& s, Vec2 x, double tol) {
+    return distance_to_curve(s.curve, x) <= tol;
+  }
+  static bool ends_near(const ContactSegment& s, Vec2 x, double tol) {
+    return std::min(distance(s.curve.from, x), distance(s.curve.to, x)) <= tol;
+  }
+
   // How near x lies to the family's contact segments at theta, and to their ends: one
   // rebuild of the segments answers both (a triple needs both; a pair one of each family).
   struct Nearness {
@@ -287,8 +296,8 @@ class Worker {
     Nearness n;
     const double tol = ctx_.pair.tol.criticality;
     for (const ContactSegment& s : segments_of(family, turn, scratch_)) {
-      n.on_segment |= distance_to_curve(s.curve, x) <= tol;
-      n.at_end |= std::min(distance(s.curve.from, x), distance(s.curve.to, x)) <= tol;
+      n.on_segment |= passes_near(s, x, tol);
+      n.at_end |= ends_near(s, x, tol);
     }
     return n;
   }
@@ -297,16 +306,14 @@ class Worker {
   bool on_segment(int family, const Transform& turn, Vec2 x) {
     const double tol = ctx_.pair.tol.criticality;
     const auto& segments = segments_of(family, turn, scratch_);
-    return std::any_of(segments.begin(), segments.end(), [&](const ContactSegment& s) {
-      return distance_to_curve(s.curve, x) <= tol;
-    });
+    return std::any_of(segments.begin(), segments.end(),
+                       [&](const ContactSegment& s) { return passes_near(s, x, tol); });
   }
   bool at_end(int family, const Transform& turn, Vec2 x) {
     const double tol = ctx_.pair.tol.criticality;
     const auto& segments = segments_of(family, turn, scratch_);
-    return std::any_of(segments.begin(), segments.end(), [&](const ContactSegment& s) {
-      return std::min(distance(s.curve.from, x), distance(s.curve.to, x)) <= tol;
-    });
+    return std::any_of(segments.begin(), segments.end(),
+                       [&](const ContactSegment& s) { return ends_near(s, x, tol); });
   }
 
   // A cheap first test: every family involved exists at theta.
@@ -550,33 +557,19 @@ class CriticalFinder {
   }
 
   // Sorted by `before`. Candidates it does not order are alike in every field (count follows
-  // from the condition), so every sort gives the same sequence: the angles are spread over
-  // the turn, so the keys go into buckets by angle (a monotone map), each bucket sorted by
-  // `before`, and each candidate moved once.
+  // from the condition), and their angles are spread over the turn: bucketed by angle (a
+  // monotone map), each bucket sorted by `before`. A NaN angle has no bucket.
   static void sort_candidates(std::vector<Candidate>& found) {
-    const size_t n = found.size(), buckets = std::max<size_t>(1, n / 4);
+    const auto nan = [](const Candidate& c) { return std::isnan(c.theta); };
+    if (std::any_of(found.begin(), found.end(), nan))
+      return std::sort(found.begin(), found.end(), before);
+    const size_t buckets = std::max<size_t>(1, found.size() / 4);
     const double per_radian = double(buckets) / kTwoPi;
-    std::vector<std::uint32_t> start(buckets + 1, 0), order(n);
-    std::vector<std::uint32_t> bucket(n);
-    for (size_t i = 0; i < n; ++i) {
-      const double t = found[i].theta;
-      if (std::isnan(t)) return std::sort(found.begin(), found.end(), before);
-      const double b = std::floor((t + kPi) * per_radian);  // monotone in t
-      bucket[i] = std::uint32_t(std::clamp(b, 0.0, double(buckets - 1)));
-      ++start[bucket[i] + 1];
-    }
-    for (size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
-    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-    for (size_t i = 0; i < n; ++i) order[next[bucket[i]]++] = std::uint32_t(i);
-    const auto by_candidate = [&](std::uint32_t x, std::uint32_t y) {
-      return before(found[x], found[y]);
+    const auto bucket_of = [&](const Candidate& c) {
+      const double b = std::floor((c.theta + kPi) * per_radian);  // monotone in theta
+      return size_t(std::clamp(b, 0.0, double(buckets - 1)));
     };
-    for (size_t b = 0; b < buckets; ++b)
-      std::sort(order.begin() + start[b], order.begin() + start[b + 1], by_candidate);
-    std::vector<Candidate> sorted;
-    sorted.reserve(n);
-    for (std::uint32_t i : order) sorted.push_back(found[i]);
-    found = std::move(sorted);
+    bucket_sort(found, buckets, bucket_of, before);
   }
 
   // Condition 2 needs no equation: the switches are known per family.
