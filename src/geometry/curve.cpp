@@ -111,17 +111,10 @@ Box arc_bounding_box(const Curve& c) {
     }
     return b;
   }
-  // arc_passes for each axis, the loop unrolled and the direction of travel chosen once
-  // (every arc box of a slice comes here).
-  const bool ccw = c.sweep > 0.0;
-  auto passes = [&](double a) {
-    const double delta = ccw ? ccw_turn(c.start_angle, a) : ccw_turn(a, c.start_angle);
-    return delta <= span || delta == kTwoPi;
-  };
-  if (passes(axes[0].angle)) b.add(c.center + c.radius * axes[0].unit);
-  if (passes(axes[1].angle)) b.add(c.center + c.radius * axes[1].unit);
-  if (passes(axes[2].angle)) b.add(c.center + c.radius * axes[2].unit);
-  if (passes(axes[3].angle)) b.add(c.center + c.radius * axes[3].unit);
+  for (const AxisDirection& axis : axes) {
+    const double delta = arc_turn(c, axis.angle);
+    if (delta <= span || delta == kTwoPi) b.add(c.center + c.radius * axis.unit);
+  }
   return b;
 }
 

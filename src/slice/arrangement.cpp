@@ -648,24 +648,16 @@ void list_face_cycles(Arrangement& arr, Scratch& s) {
 }
 
 // The box of cycle k, and those of its edges, computed on first use after a build.
-//
-// Each edge box is added as Box::add(const Box&) adds it (its lo, then its hi), with half the
-// comparisons: a box built point by point holds no NaN (a min or max with NaN keeps the
-// other side), and where its lo and hi are equal they are the same point's coordinate, the
-// same bits. So its hi never lowers the lo its lo left, nor its lo raise the hi.
 const Box& cycle_box_of(const Arrangement& arr, Scratch& s, int k) {
   if (s.cycle_box_known[k]) return s.cycle_box[k];
-  Box b;
+  Box b;  // built in a local: stores to s.box would make the compiler reload it
   for (int h : arr.half_edges(k)) {
     const int e = h / 2;
     if (!s.box_known[e]) {
       s.box[e] = bounding_box(arr.edges[e].curve);
       s.box_known[e] = true;
     }
-    const Box& edge = s.box[e];
-    if (edge.empty()) continue;
-    b.lo = {std::min(b.lo.x, edge.lo.x), std::min(b.lo.y, edge.lo.y)};
-    b.hi = {std::max(b.hi.x, edge.hi.x), std::max(b.hi.y, edge.hi.y)};
+    b.add(s.box[e]);
   }
   s.cycle_box[k] = b;
   s.cycle_box_known[k] = true;
@@ -763,11 +755,6 @@ void collect_meetings(Scratch& s, size_t curves) {
 
 const Box& ArrangementBuilder::cycle_box(int cycle) {
   return cycle_box_of(arr_, *scratch_, cycle);
-}
-
-Curve Arrangement::half_curve(int h) const {
-  const Curve& c = edges[h / 2].curve;
-  return h % 2 == 0 ? c : reversed(c);
 }
 
 ArrangementBuilder::ArrangementBuilder() : scratch_(std::make_unique<Scratch>()) {}

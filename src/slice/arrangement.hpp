@@ -129,7 +129,11 @@ struct Arrangement {
   int origin(int h) const { return h % 2 == 0 ? edges[h / 2].u : edges[h / 2].v; }
   int target(int h) const { return h % 2 == 0 ? edges[h / 2].v : edges[h / 2].u; }
   int face_of(int h) const { return cycles[cycle_of[h]].face; }
-  Curve half_curve(int h) const;  // the edge's curve oriented along h
+  // The edge's curve oriented along h (inline: every realizable piece is made from one).
+  Curve half_curve(int h) const {
+    const Curve& c = edges[h / 2].curve;
+    return h % 2 == 0 ? c : reversed(c);
+  }
   // Unit tangent of h where it leaves its origin.
   Vec2 direction(int h) const {
     const ArrangementEdge& e = edges[h / 2];

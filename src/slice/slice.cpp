@@ -279,14 +279,9 @@ class SliceBuilder {
       if (s.is_point && !blocked_at(s.curve.from)) add_degenerate_point(s.curve.from, {s.id});
   }
 
-  // Appends the piece of half-edge h (built in place: a piece is mostly its curve), as
-  // Arrangement::half_curve orients it; a forward one copies the edge's curve directly.
+  // Appends the piece of half-edge h (built in place: a piece is mostly its curve).
   void add_piece(std::vector<ContactPiece>& pieces, int h) const {
-    const Curve& c = arr_->edges[h / 2].curve;
-    if (h % 2 == 0)
-      pieces.emplace_back(scratch_.lowest_label[h / 2], c);
-    else
-      pieces.emplace_back(scratch_.lowest_label[h / 2], reversed(c));
+    pieces.emplace_back(scratch_.lowest_label[h / 2], arr_->half_curve(h));
   }
 
   void collect_components() {
