@@ -347,15 +347,21 @@ TEST_F(SpaceCli, BadInputExitsTwoWithNoFile) {
     EXPECT_EQ(entry.path().filename().string().find("space.json"), std::string::npos);
 }
 
+// The lines of a command's output.
+std::vector<std::string> lines_of(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
 TEST_F(SpaceCli, StatsPrintsOneMarkdownRowPerPair) {
   const testkit::RunResult r =
       testkit::run_cli("stats " + testkit::quoted(testkit::example_path("disc-in-box")) + " " +
                            testkit::quoted(testkit::example_path("square-peg-hole")),
                        dir_);
   ASSERT_EQ(r.status, 0) << r.err;
-  std::istringstream in(r.out);
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  const std::vector<std::string> lines = lines_of(r.out);
   ASSERT_EQ(lines.size(), 4u) << r.out;  // header, alignment row, one row per pair
   EXPECT_EQ(lines[1].rfind("| :---", 0), 0u);
   EXPECT_EQ(lines[2].rfind("| disc-in-box | 9 (1+8) | 0 (0) |", 0), 0u) << lines[2];
@@ -383,13 +389,7 @@ TEST_F(SpaceCli, StatsRunsRepeatsAndKeepsTheTable) {
   const testkit::RunResult thrice = testkit::run_cli("stats --runs 3 " + pair, dir_);
   ASSERT_EQ(once.status, 0) << once.err;
   ASSERT_EQ(thrice.status, 0) << thrice.err;
-  const auto rows = [](const std::string& out) {
-    std::vector<std::string> lines;
-    std::istringstream in(out);
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    return lines;
-  };
-  const std::vector<std::string> a = rows(once.out), b = rows(thrice.out);
+  const std::vector<std::string> a = lines_of(once.out), b = lines_of(thrice.out);
   ASSERT_EQ(a.size(), 3u) << once.out;
   ASSERT_EQ(b.size(), 3u) << thrice.out;
   EXPECT_EQ(a[0], b[0]);

@@ -235,24 +235,19 @@ Trig dot(const TrigVec& u, const TrigVec& v) {
 Trig cross(const TrigVec& u, const TrigVec& v) {
   return u.x * v.y - u.y * v.x;
 }
-// operator- then evaluate_at: the same differences, up to the difference's degree.
+// operator- then evaluate_at: the same differences, up to the difference's degree, without
+// operator-'s bookkeeping.
 double evaluate_difference(const Trig& f, const Trig& g, const TrigAngle& theta) {
-  const int top = std::max(f.top, g.top);
-  std::array<double, Trig::kMaxDegree + 1> a, b;  // set up to top
+  Trig d;
+  d.top = std::max(f.top, g.top);
+  d.a[0] = f.a[0] - g.a[0];
   int n = 0;
-  for (int j = 1; j <= top; ++j) {
-    a[j] = f.a[j] - g.a[j];
-    b[j] = f.b[j] - g.b[j];
-    if (a[j] != 0.0 || b[j] != 0.0) n = j;
+  for (int j = 1; j <= d.top; ++j) {
+    d.a[j] = f.a[j] - g.a[j];
+    d.b[j] = f.b[j] - g.b[j];
+    if (d.a[j] != 0.0 || d.b[j] != 0.0) n = j;
   }
-  double c = 1.0, s = 0.0, v = f.a[0] - g.a[0];
-  for (int j = 1; j <= n; ++j) {
-    const double cn = c * theta.c - s * theta.s;
-    s = s * theta.c + c * theta.s;
-    c = cn;
-    v += a[j] * c + b[j] * s;
-  }
-  return v;
+  return evaluate_at(d, n, theta.c, theta.s);
 }
 
 Vec2 evaluate(const TrigVec& v, double theta) {
