@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -128,6 +129,14 @@ class Slicer {
   Slicer(Slicer&&) noexcept;
   Slicer& operator=(Slicer&&) noexcept;
   Slice slice(double theta);
+  // The same slice when the caller knows which labels can be realizable at theta: every
+  // contact segment is listed, but only those whose label is in `may_be_realizable` (sorted,
+  // each once) enter the arrangement, which then costs that share of the whole. Faces the
+  // others would split are blocked on both sides of them, so the result is slice(theta)
+  // (up to round-off in areas) as long as the promise holds; where it does not, realizable
+  // pieces go missing. The sliced space keeps it from its critical orientations
+  // (docs/space-format.md, "Slices arranged from their neighbours' labels").
+  Slice slice(double theta, std::span<const SegmentLabel> may_be_realizable);
 
  private:
   struct State;

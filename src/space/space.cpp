@@ -107,8 +107,80 @@ void for_each_index_parallel(const Pair& pair, size_t count, int threads,
                                         [&](size_t i, SlicerWorker& w) { slice_at(i, w.slicer); });
 }
 
+namespace {
+// Appends the slice's realizable labels, sorted, each once (realizable_labels).
+void append_realizable_labels(const Slice& slice, std::vector<char>& marked,
+                              std::vector<SegmentLabel>& out) {
+  const size_t first = out.size();
+  mark_realizable_segments(slice, marked);
+  for (size_t id = 0; id < marked.size(); ++id)
+    if (marked[id]) {
+      const ContactSegment& s = slice.contact_segments[id];  // ids number the segments
+      out.push_back({s.moving_feature, s.fixed_feature});
+    }
+  std::sort(out.begin() + first, out.end());
+  out.erase(std::unique(out.begin() + first, out.end()), out.end());
+}
+
+// Per critical orientation, the labels its criticalities name, sorted, each once.
+std::vector<std::vector<SegmentLabel>> named_labels(const CriticalSet& criticals) {
+  std::vector<std::vector<SegmentLabel>> out;
+  for (const CriticalOrientation& o : criticals.orientations) {
+    std::vector<SegmentLabel>& labels = out.emplace_back();
+    for (const Criticality& c : o.criticalities)
+      for (const FeaturePairRef& p : c.pairs) labels.push_back({p.moving_feature, p.fixed_feature});
+    std::sort(labels.begin(), labels.end());
+    labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
+  }
+  return out;
+}
+
+// Consecutive slices from scratch (theta order) taken by one thread: the first arranges every
+// contact segment, each next one only the labels that can be realizable there. Fixed, so the
+// result does not depend on the thread count; long enough that few slices arrange
+// everything, short enough to spread the runs over the cores.
+constexpr size_t kNarrowedRun = 16;
+
+// A run of slices from scratch, `run` (plan indices, theta order), each passed to store.
+// Where a label starts or stops being realizable, the contact structure changes: a
+// criticality naming it. Between two consecutive slices of the run lies at most the critical
+// orientation of the second's interval (a critical slice's own, or that of the interval it
+// opens), since every critical orientation and every interval has a slice from scratch. So
+// the slice's realizable labels are among the last slice's and the ones that orientation
+// names; the others are listed but not arranged (Slicer::slice).
+void slice_run(std::span<const size_t> run, const std::vector<Planned>& plan,
+               const std::vector<std::vector<SegmentLabel>>& named, bool narrow, Slicer& slicer,
+               const std::function<void(size_t, Slice)>& store) {
+  std::vector<SegmentLabel> last, arranged;
+  std::vector<char> marked;
+  for (size_t k = 0; k < run.size(); ++k) {
+    const Planned& p = plan[run[k]];
+    if (k == 0 || !narrow) {
+      Slice slice = slicer.slice(p.theta);
+      last.clear();
+      if (narrow) append_realizable_labels(slice, marked, last);
+      store(run[k], std::move(slice));
+      continue;
+    }
+    arranged.clear();
+    // With no critical orientation at all, the whole turn is one interval with no events.
+    const size_t interval = static_cast<size_t>(p.interval);
+    const std::span<const SegmentLabel> events =
+        interval < named.size() ? std::span<const SegmentLabel>(named[interval])
+                                : std::span<const SegmentLabel>();
+    std::set_union(last.begin(), last.end(), events.begin(), events.end(),
+                   std::back_inserter(arranged));
+    Slice slice = slicer.slice(p.theta, arranged);
+    last.clear();
+    append_realizable_labels(slice, marked, last);
+    store(run[k], std::move(slice));
+  }
+}
+}  // namespace
+
 std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Planned>& plan,
-                                       int threads, bool evaluate, const ProgressReport& progress,
+                                       const CriticalSet& criticals, int threads, bool evaluate,
+                                       bool narrow, const ProgressReport& progress,
                                        KnownModels* models) {
   std::vector<SpaceSlice> out(plan.size());
   if (models) models->assign(plan.size(), std::nullopt);
@@ -134,8 +206,12 @@ std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Plann
     else
       first.push_back(i);
   }
-  for_each_index_parallel(pair, first.size(), threads, [&](size_t k, Slicer& s) {
-    store(first[k], s.slice(plan[first[k]].theta), false);
+  const std::vector<std::vector<SegmentLabel>> named = named_labels(criticals);
+  const size_t runs = (first.size() + kNarrowedRun - 1) / kNarrowedRun;
+  for_each_index_parallel(pair, runs, threads, [&](size_t r, Slicer& s) {
+    const size_t begin = r * kNarrowedRun, end = std::min(first.size(), begin + kNarrowedRun);
+    slice_run(std::span<const size_t>(first.data() + begin, end - begin), plan, named, narrow, s,
+              [&](size_t i, Slice slice) { store(i, std::move(slice), false); });
   });
   for_each_index_parallel<SliceWorker>(pair, later.size(), threads, [&](size_t k, SliceWorker& w) {
     if (later[k].empty()) return;
@@ -151,22 +227,6 @@ std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Plann
   });
   return out;
 }
-
-namespace {
-// Appends the slice's realizable labels, sorted, each once (realizable_labels).
-void append_realizable_labels(const Slice& slice, std::vector<char>& marked,
-                              std::vector<SegmentLabel>& out) {
-  const size_t first = out.size();
-  mark_realizable_segments(slice, marked);
-  for (size_t id = 0; id < marked.size(); ++id)
-    if (marked[id]) {
-      const ContactSegment& s = slice.contact_segments[id];  // ids number the segments
-      out.push_back({s.moving_feature, s.fixed_feature});
-    }
-  std::sort(out.begin() + first, out.end());
-  out.erase(std::unique(out.begin() + first, out.end()), out.end());
-}
-}  // namespace
 
 // Slice i to slice i + 1, and the last back to the first: theta = -pi and pi are one slice.
 // Every slice's labels go into one buffer (slice i's from start[i] to start[i + 1]): slices
@@ -258,9 +318,9 @@ SlicedSpace compute_space(const Pair& pair, const SpaceOptions& options) {
   space.reach = contact_reach(pair);
   space.max_step = interpolation_step(space.reach, pair.tol.contact);
   detail::KnownModels models;
-  space.slices =
-      detail::compute_slices(pair, detail::plan_slices(space.criticals, space.max_step),
-                             options.threads, options.evaluate_slices, options.progress, &models);
+  space.slices = detail::compute_slices(pair, detail::plan_slices(space.criticals, space.max_step),
+                                        space.criticals, options.threads, options.evaluate_slices,
+                                        options.narrow_arrangements, options.progress, &models);
   space.correspondence = detail::slice_correspondences(space.slices);
   report("topology", 0, 1);
   space.topology = detail::compute_topology(

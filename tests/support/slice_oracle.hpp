@@ -26,7 +26,8 @@ int check_slice_against_classify(const Pair& pair, const Slice& slice, int point
 // A slice made another way (evaluated from a boundary model) against the slice computed from
 // scratch at its theta: the same contact segments, the free components matched through
 // their samples both ways with the same boundedness and area, the same realizable labels,
-// contact graph (by label) and blocked area. Pieces and components may come in another order.
+// contact graph (by label), degenerate contacts (by count) and blocked area. Pieces and
+// components may come in another order.
 void expect_same_slice(const Pair& pair, const Slice& other, const Slice& computed,
                        const std::string& what);
 
