@@ -57,10 +57,9 @@ struct SliceScratch {
 
 class SliceBuilder {
  public:
-  // Only contact segments labelled in `arranged` (sorted) enter the arrangement, when given.
+  // Only contact segments `arranged` takes enter the arrangement, when given.
   SliceBuilder(const Pair& pair, ContactMaker& contacts, std::optional<PlacementTester>& tester,
-               SliceScratch& scratch, double theta,
-               const std::span<const SegmentLabel>* arranged = nullptr)
+               SliceScratch& scratch, double theta, const ArrangedContacts* arranged = nullptr)
       : pair_(pair),
         contacts_(contacts),
         tester_(tester),
@@ -84,8 +83,7 @@ class SliceBuilder {
     scratch_.left_out.clear();
     for (const ContactSegment& s : slice_.contact_segments) {
       if (s.is_point) continue;
-      if (arranged_ && !std::binary_search(arranged_->begin(), arranged_->end(),
-                                           SegmentLabel{s.moving_feature, s.fixed_feature})) {
+      if (arranged_ && !arranged_->takes(s)) {
         scratch_.left_out.push_back(s.id);
         continue;
       }
@@ -167,8 +165,8 @@ class SliceBuilder {
           continue;
         }
         const Intersection r = intersect(c, other, reach);
-        for (int k = 0; k < r.count; ++k)
-          if (inside(c, r.hits[k])) return true;
+        for (int h = 0; h < r.count; ++h)
+          if (inside(c, r.hits[h])) return true;
       }
       return false;
     };
@@ -422,7 +420,7 @@ class SliceBuilder {
   ContactMaker& contacts_;
   std::optional<PlacementTester>& tester_;
   double theta_;
-  const std::span<const SegmentLabel>* arranged_;
+  const ArrangedContacts* arranged_;
   Slice slice_;
   const Arrangement* arr_ = nullptr;
   std::vector<char>& blocked_;     // per face
@@ -470,7 +468,31 @@ Slice Slicer::slice(double theta) {
   return SliceBuilder(s.pair, s.contacts, s.tester, s.scratch, theta).build();
 }
 
-Slice Slicer::slice(double theta, std::span<const SegmentLabel> may_be_realizable) {
+bool ArrangedContacts::takes(const ContactSegment& s) const {
+  if (std::binary_search(labels.begin(), labels.end(),
+                         SegmentLabel{s.moving_feature, s.fixed_feature}))
+    return true;
+  if (through.empty()) return false;
+  // A box around the curve, loose for an arc (its circle's) but cheap, rules out most points
+  // before their distance.
+  const Curve& c = s.curve;
+  Box box;
+  if (c.is_arc()) {
+    box.add(c.center - Vec2{c.radius, c.radius});
+    box.add(c.center + Vec2{c.radius, c.radius});
+  } else {
+    box.add(c.from);
+    box.add(c.to);
+  }
+  box = box.inflated(reach);
+  for (const Vec2 p : through)
+    if (p.x >= box.lo.x && p.x <= box.hi.x && p.y >= box.lo.y && p.y <= box.hi.y &&
+        distance_to_curve(c, p) <= reach)
+      return true;
+  return false;
+}
+
+Slice Slicer::slice(double theta, const ArrangedContacts& may_be_realizable) {
   State& s = *state_;
   return SliceBuilder(s.pair, s.contacts, s.tester, s.scratch, theta, &may_be_realizable).build();
 }

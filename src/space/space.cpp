@@ -122,57 +122,93 @@ void append_realizable_labels(const Slice& slice, std::vector<char>& marked,
   out.erase(std::unique(out.begin() + first, out.end()), out.end());
 }
 
-// Per critical orientation, the labels its criticalities name, sorted, each once.
-std::vector<std::vector<SegmentLabel>> named_labels(const CriticalSet& criticals) {
-  std::vector<std::vector<SegmentLabel>> out;
+// What each critical orientation says about the labels that can change there: those its
+// criticalities name (sorted, each once) and the configurations where they happen.
+struct Events {
+  std::vector<SegmentLabel> named;
+  std::vector<Vec2> at;
+};
+
+std::vector<Events> events_of(const CriticalSet& criticals, double merge) {
+  std::vector<Events> out;
   for (const CriticalOrientation& o : criticals.orientations) {
-    std::vector<SegmentLabel>& labels = out.emplace_back();
-    for (const Criticality& c : o.criticalities)
-      for (const FeaturePairRef& p : c.pairs) labels.push_back({p.moving_feature, p.fixed_feature});
-    std::sort(labels.begin(), labels.end());
-    labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
+    Events& e = out.emplace_back();
+    for (const Criticality& c : o.criticalities) {
+      e.at.push_back(c.at);
+      for (const FeaturePairRef& p : c.pairs)
+        e.named.push_back({p.moving_feature, p.fixed_feature});
+    }
+    std::sort(e.named.begin(), e.named.end());
+    e.named.erase(std::unique(e.named.begin(), e.named.end()), e.named.end());
+    // Several equations find one event (an end of a on b and of b on a, a vertex with both
+    // its edges): one point of each cluster closer than `merge` serves them all.
+    std::vector<Vec2> kept;
+    for (const Vec2 p : e.at)
+      if (std::none_of(kept.begin(), kept.end(), [&](Vec2 q) { return distance(p, q) <= merge; }))
+        kept.push_back(p);
+    e.at = std::move(kept);
   }
   return out;
 }
 
 // Consecutive slices from scratch (theta order) taken by one thread: the first arranges every
-// contact segment, each next one only the labels that can be realizable there. Fixed, so the
+// contact segment, each next one only those that can be realizable there. Fixed, so the
 // result does not depend on the thread count; long enough that few slices arrange
 // everything, short enough to spread the runs over the cores.
 constexpr size_t kNarrowedRun = 16;
 
 // A run of slices from scratch, `run` (plan indices, theta order), each passed to store.
-// Where a label starts or stops being realizable, the contact structure changes: a
-// criticality naming it. Between two consecutive slices of the run lies at most the critical
-// orientation of the second's interval (a critical slice's own, or that of the interval it
-// opens), since every critical orientation and every interval has a slice from scratch. So
-// the slice's realizable labels are among the last slice's and the ones that orientation
-// names; the others are listed but not arranged (Slicer::slice).
+// Where a label starts or stops being realizable, the contact structure changes at some
+// configuration: a criticality there, whose curves all pass through it (those it names, and
+// any other ending or crossing there: contact segments of neighbouring features share ends).
+// Between two consecutive slices of the run lies at most the critical orientation of the
+// second's interval (a critical slice's own, or that of the interval it opens), since every
+// critical orientation and every interval has a slice from scratch. So the slice's
+// realizable labels are among the last slice's, those the orientation names and those of
+// the contact segments through its criticalities' configurations at the orientation: for a
+// critical slice its own segments there, for the slice after it those of the critical slice.
+// The others are listed but not arranged (Slicer::slice).
 void slice_run(std::span<const size_t> run, const std::vector<Planned>& plan,
-               const std::vector<std::vector<SegmentLabel>>& named, bool narrow, Slicer& slicer,
+               const std::vector<Events>& events, double reach, bool narrow, Slicer& slicer,
                const std::function<void(size_t, Slice)>& store) {
   std::vector<SegmentLabel> last, arranged;
   std::vector<char> marked;
   for (size_t k = 0; k < run.size(); ++k) {
     const Planned& p = plan[run[k]];
-    if (k == 0 || !narrow) {
-      Slice slice = slicer.slice(p.theta);
-      last.clear();
-      if (narrow) append_realizable_labels(slice, marked, last);
-      store(run[k], std::move(slice));
-      continue;
-    }
-    arranged.clear();
     // With no critical orientation at all, the whole turn is one interval with no events.
     const size_t interval = static_cast<size_t>(p.interval);
-    const std::span<const SegmentLabel> events =
-        interval < named.size() ? std::span<const SegmentLabel>(named[interval])
-                                : std::span<const SegmentLabel>();
-    std::set_union(last.begin(), last.end(), events.begin(), events.end(),
-                   std::back_inserter(arranged));
-    Slice slice = slicer.slice(p.theta, arranged);
-    last.clear();
-    append_realizable_labels(slice, marked, last);
+    const Events none;
+    const Events& here = interval < events.size() ? events[interval] : none;
+    const bool critical = p.kind == SliceKind::critical;
+    Slice slice;
+    if (k == 0 || !narrow) {
+      slice = slicer.slice(p.theta);
+    } else {
+      arranged.clear();
+      std::set_union(last.begin(), last.end(), here.named.begin(), here.named.end(),
+                     std::back_inserter(arranged));
+      ArrangedContacts take{arranged, {}, reach};
+      if (critical) take.through = here.at;
+      slice = slicer.slice(p.theta, take);
+    }
+    if (narrow) {
+      last.clear();
+      append_realizable_labels(slice, marked, last);
+      // The next slice lies past this critical orientation: the labels through its events
+      // join those realizable here.
+      if (critical) {
+        const ArrangedContacts through{{}, here.at, reach};
+        const auto realizable = static_cast<std::ptrdiff_t>(last.size());
+        for (const ContactSegment& s : slice.contact_segments) {
+          const SegmentLabel label{s.moving_feature, s.fixed_feature};
+          if (!std::binary_search(last.begin(), last.begin() + realizable, label) &&
+              through.takes(s))
+            last.push_back(label);
+        }
+        std::sort(last.begin(), last.end());
+        last.erase(std::unique(last.begin(), last.end()), last.end());
+      }
+    }
     store(run[k], std::move(slice));
   }
 }
@@ -206,12 +242,13 @@ std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Plann
     else
       first.push_back(i);
   }
-  const std::vector<std::vector<SegmentLabel>> named = named_labels(criticals);
+  const std::vector<Events> events = events_of(criticals, pair.tol.criticality);
+  const double reach = kEventReachPerCriticality * pair.tol.criticality;
   const size_t runs = (first.size() + kNarrowedRun - 1) / kNarrowedRun;
   for_each_index_parallel(pair, runs, threads, [&](size_t r, Slicer& s) {
     const size_t begin = r * kNarrowedRun, end = std::min(first.size(), begin + kNarrowedRun);
-    slice_run(std::span<const size_t>(first.data() + begin, end - begin), plan, named, narrow, s,
-              [&](size_t i, Slice slice) { store(i, std::move(slice), false); });
+    slice_run(std::span<const size_t>(first.data() + begin, end - begin), plan, events, reach,
+              narrow, s, [&](size_t i, Slice slice) { store(i, std::move(slice), false); });
   });
   for_each_index_parallel<SliceWorker>(pair, later.size(), threads, [&](size_t k, SliceWorker& w) {
     if (later[k].empty()) return;
