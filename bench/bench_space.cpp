@@ -4,32 +4,24 @@
 // example on one core, and the two-core speed-up.
 //
 //   BM_Space/<name>/threads:<t>  the example on t threads (oneTBB; the result is the same)
-//   BM_SpaceArrangedWhole/<name>/threads:1  every slice from scratch arranging all its contact
-//                                segments (SpaceOptions::narrow_arrangements = false)
-//   BM_SpaceFromScratch/<name>/threads:1  that, and none evaluated from its interval's
-//                                structure (SpaceOptions::evaluate_slices = false)
+//   BM_SpaceFromScratch/<name>/threads:1  every slice computed from scratch, none evaluated
+//                                from its interval's structure (SpaceOptions::evaluate_slices)
 // Counters: critical orientations, slices stored, and the milliseconds spent on the
 // critical orientations (the rest is slices and topology).
 #include <benchmark/benchmark.h>
 
 #include <string>
-#include <utility>
 
 #include "cslice/space.hpp"
 #include "support/examples.hpp"
 
 namespace {
 
-// How the slices are made: as compute_space does by default, or without one or both of its
-// shortcuts (the same space either way).
-enum class Mode { normal, arranged_whole, from_scratch };
-
-void run_space(benchmark::State& state, const std::string& name, Mode mode) {
+void run_space(benchmark::State& state, const std::string& name, bool evaluate) {
   const cslice::Pair pair = cslice::testkit::load_example(name);
   cslice::SpaceOptions options;
   options.threads = static_cast<int>(state.range(0));
-  options.narrow_arrangements = mode == Mode::normal;
-  options.evaluate_slices = mode != Mode::from_scratch;
+  options.evaluate_slices = evaluate;
   cslice::SlicedSpace space;
   double criticals_seconds = 0.0;
   for (auto _ : state) {
@@ -43,20 +35,16 @@ void run_space(benchmark::State& state, const std::string& name, Mode mode) {
       benchmark::Counter(1e3 * criticals_seconds, benchmark::Counter::kAvgIterations);
 }
 
-// Every example as compute_space makes it on one and two threads, then arranged whole and
-// from scratch on one, in that order.
+// Every example evaluated on one and two threads, then from scratch on one, in that order.
 void register_benchmarks() {
   const char* const examples[] = {"knee", "cam", "fixture", "fastener"};
-  const std::pair<Mode, const char*> modes[] = {{Mode::normal, "BM_Space/"},
-                                                {Mode::arranged_whole, "BM_SpaceArrangedWhole/"},
-                                                {Mode::from_scratch, "BM_SpaceFromScratch/"}};
-  for (const auto& [mode, prefix] : modes)
+  for (const bool evaluate : {true, false})
     for (const char* name : examples) {
-      const std::string title = std::string(prefix) + name;
+      const std::string title = std::string(evaluate ? "BM_Space/" : "BM_SpaceFromScratch/") + name;
       benchmark::internal::Benchmark* b = benchmark::RegisterBenchmark(
-          title.c_str(), [=](benchmark::State& state) { run_space(state, name, mode); });
+          title.c_str(), [=](benchmark::State& state) { run_space(state, name, evaluate); });
       b->ArgName("threads")->Arg(1)->Unit(benchmark::kMillisecond);
-      if (mode == Mode::normal) b->Arg(2);
+      if (evaluate) b->Arg(2);
     }
 }
 

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <memory>
-#include <span>
 #include <string_view>
 #include <vector>
 
@@ -119,16 +118,6 @@ std::vector<int> realizable_segments(const Slice& slice);
 // The same as marks by id (1: realizable), into a buffer the caller keeps from slice to slice.
 void mark_realizable_segments(const Slice& slice, std::vector<char>& marked);
 
-// The contact segments a narrowed slice arranges (Slicer::slice): those labelled in `labels`
-// (sorted, each once) and those passing within `reach` of one of the points `through`.
-struct ArrangedContacts {
-  std::span<const SegmentLabel> labels;
-  std::span<const Vec2> through;
-  double reach = 0.0;
-
-  bool takes(const ContactSegment& s) const;
-};
-
 // Many slices of one pair (the engine behind compute_slice): the features' contact data and
 // the placement tester's indexes are built once instead of per slice. Not thread-safe, as
 // it keeps scratch state: one per thread. The pair must outlive it.
@@ -139,14 +128,6 @@ class Slicer {
   Slicer(Slicer&&) noexcept;
   Slicer& operator=(Slicer&&) noexcept;
   Slice slice(double theta);
-  // The same slice when the caller knows which contact segments can be realizable at theta
-  // (`may_be_realizable`): every contact segment is listed, but only those enter the
-  // arrangement, which then costs that share of the whole. Faces the others would split are
-  // blocked on both sides of them, so the result is slice(theta) (up to round-off in areas)
-  // as long as the promise holds; where it does not, realizable pieces go missing. The
-  // sliced space keeps it from its critical orientations (docs/space-format.md, "Slices
-  // arranged from their neighbours' labels").
-  Slice slice(double theta, const ArrangedContacts& may_be_realizable);
 
  private:
   struct State;

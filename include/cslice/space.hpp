@@ -167,14 +167,6 @@ struct SpaceOptions {
   // structure can be modelled; false computes every slice from scratch (the tests compare
   // the two). Files are read back with the default.
   bool evaluate_slices = true;
-  // Slices computed from scratch, but for the first of each run of 16, arranging only the
-  // contact segments whose labels were realizable in the slice before or are named by the
-  // critical orientation between, and those passing through its criticalities'
-  // configurations: a label becomes or stops being realizable only at a criticality its
-  // segment passes through. The same slices (up to round-off in areas) wherever the
-  // critical orientations are complete; false arranges every contact segment (the tests
-  // compare). Files are read back with the default.
-  bool narrow_arrangements = true;
 };
 
 struct TopologyOptions {

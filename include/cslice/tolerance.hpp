@@ -47,24 +47,6 @@ inline constexpr double kMaxArcRadiusPerSize = kCriticalityPerGeometric / 10;
 // transversal crossing they are then sqrt(1e3 / angular) ~ 3e4 times further apart still.
 inline constexpr double kSideSliceAngleSquaredPerAngular = kCriticalityPerGeometric;
 
-// A slice arranged from only the contact segments that can be realizable (Slicer::slice with
-// labels) leaves the others out, and is arranged whole instead when one of them comes within
-// this many geometric epsilons of a realizable edge (dimensionless). The arrangement lets a
-// curve cut or move another's vertices from within eps (a point within eps of a curve lies on
-// it) and passes split points on between curves running within eps of each other, in two
-// passes: four epsilons cover a left-out curve's reach through one such chain.
-inline constexpr double kNarrowedReachPerGeometric = 4.0;
-
-// How far from a criticality's configuration a contact segment of its critical slice may pass
-// and still count as going through it, in criticality tolerances (dimensionless): a narrowed
-// slice arranges every contact segment through a criticality of its orientation. The
-// configuration lies within one criticality tolerance of its own curves at its own theta, up
-// to two critical angles from the orientation's middle, where the slice is; over that turn a
-// contact curve moves by at most kMaxArcRadiusPerSize sizes per radian (a flat arc's centre
-// far out), so by that many criticality tolerances per critical angle. One more covers the
-// merging of an orientation's criticality configurations closer than one tolerance.
-inline constexpr double kEventReachPerCriticality = 2 + 2 * kMaxArcRadiusPerSize;
-
 // The contact mesh (src/mesh, docs/mesh.md). A strip triangle spans a chord of a slice, longer
 // than the geometric epsilon (closer corners are one vertex), and the step in theta between
 // two slices, at least half the critical angle (consecutive critical orientations are further

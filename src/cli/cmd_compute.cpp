@@ -27,7 +27,6 @@ void run(const ComputeCommand& cmd) {
   options.threads = cmd.threads;
   options.verify_joins = cmd.verify_joins;
   options.evaluate_slices = !cmd.from_scratch;
-  options.narrow_arrangements = !cmd.from_scratch;
   std::optional<ProgressLine> progress(std::in_place, "cslice compute");
   options.progress = progress->report();
   const SlicedSpace space = compute_space(pair, options);
@@ -53,9 +52,8 @@ void register_compute(CLI::App& app) {
                 "Side slices at every critical orientation, each checked against its interval,\n"
                 "even where the free-component counts decide the joins (slower; same result)");
   sub->add_flag("--from-scratch", cmd->from_scratch,
-                "Every slice computed from scratch with every contact segment arranged, none\n"
-                "evaluated from its interval's representative nor arranged from its\n"
-                "neighbour's labels (slower; the same result to round-off)");
+                "Every slice computed from scratch, none evaluated from its interval's\n"
+                "representative (slower; the same result to round-off)");
   sub->callback([cmd] { run(*cmd); });
 }
 

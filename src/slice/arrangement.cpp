@@ -647,20 +647,18 @@ void list_face_cycles(Arrangement& arr, Scratch& s) {
       arr.face_cycle_list[fill[arr.cycles[c].face]++] = int(c);
 }
 
-// The box of edge e, computed on first use after a build.
-const Box& edge_box_of(const Arrangement& arr, Scratch& s, int e) {
-  if (!s.box_known[e]) {
-    s.box[e] = bounding_box(arr.edges[e].curve);
-    s.box_known[e] = true;
-  }
-  return s.box[e];
-}
-
 // The box of cycle k, and those of its edges, computed on first use after a build.
 const Box& cycle_box_of(const Arrangement& arr, Scratch& s, int k) {
   if (s.cycle_box_known[k]) return s.cycle_box[k];
   Box b;  // built in a local: stores to s.box would make the compiler reload it
-  for (int h : arr.half_edges(k)) b.add(edge_box_of(arr, s, h / 2));
+  for (int h : arr.half_edges(k)) {
+    const int e = h / 2;
+    if (!s.box_known[e]) {
+      s.box[e] = bounding_box(arr.edges[e].curve);
+      s.box_known[e] = true;
+    }
+    b.add(s.box[e]);
+  }
   s.cycle_box[k] = b;
   s.cycle_box_known[k] = true;
   return s.cycle_box[k];
@@ -757,10 +755,6 @@ void collect_meetings(Scratch& s, size_t curves) {
 
 const Box& ArrangementBuilder::cycle_box(int cycle) {
   return cycle_box_of(arr_, *scratch_, cycle);
-}
-
-const Box& ArrangementBuilder::edge_box(int edge) {
-  return edge_box_of(arr_, *scratch_, edge);
 }
 
 ArrangementBuilder::ArrangementBuilder() : scratch_(std::make_unique<Scratch>()) {}

@@ -160,8 +160,6 @@ class ArrangementBuilder {
   // The box of a cycle of the last build: the union of its edges' boxes, in the cycle's
   // order. Found when first asked.
   const Box& cycle_box(int cycle);
-  // The box of an edge of the last build. Found when first asked.
-  const Box& edge_box(int edge);
 
   struct Scratch;  // arrangement.cpp
 

@@ -43,8 +43,6 @@ struct SliceScratch {
   ArrangementBuilder arrangements;
   std::vector<Curve> curves;
   std::vector<int> ids, vertex_ids;
-  std::vector<int> left_out;  // contact segments a narrowed slice does not arrange
-  std::vector<Box> left_out_boxes;
   std::vector<char> blocked, realizable, is_node;
   std::vector<unsigned char> label_sides;  // per edge: kBlockedLeft | kBlockedRight
   std::vector<int> lowest_label;           // per edge: the lowest contact segment id
@@ -57,14 +55,12 @@ struct SliceScratch {
 
 class SliceBuilder {
  public:
-  // Only contact segments `arranged` takes enter the arrangement, when given.
   SliceBuilder(const Pair& pair, ContactMaker& contacts, std::optional<PlacementTester>& tester,
-               SliceScratch& scratch, double theta, const ArrangedContacts* arranged = nullptr)
+               SliceScratch& scratch, double theta)
       : pair_(pair),
         contacts_(contacts),
         tester_(tester),
         theta_(theta),
-        arranged_(arranged),
         blocked_(scratch.blocked),
         samples_(scratch.samples),
         realizable_(scratch.realizable),
@@ -80,13 +76,8 @@ class SliceBuilder {
     std::vector<int>& ids = scratch_.ids;
     curves.clear();
     ids.clear();
-    scratch_.left_out.clear();
     for (const ContactSegment& s : slice_.contact_segments) {
       if (s.is_point) continue;
-      if (arranged_ && !arranged_->takes(s)) {
-        scratch_.left_out.push_back(s.id);
-        continue;
-      }
       curves.push_back(s.curve);
       ids.push_back(s.id);
     }
@@ -95,11 +86,6 @@ class SliceBuilder {
     label_faces();
     find_realizable_edges();
     find_degenerate_vertices();
-    if (left_out_meets_realizable()) {
-      arranged_ = nullptr;  // arrange every contact segment instead
-      slice_ = Slice{};
-      return build();
-    }
     find_point_contacts();
     collect_components();
     build_contact_graph();
@@ -132,52 +118,6 @@ class SliceBuilder {
       else
         blocked_[f] = blocked_at(samples_[f]);
     }
-  }
-
-  // Whether a contact segment left out of a narrowed arrangement comes near a realizable
-  // edge away from its ends, a sliding-fit candidate (an edge its own labels block on both
-  // sides) or a degenerate contact. Left out, it lies in blocked space, but it can still end
-  // on, cross or graze such an edge from there: the whole arrangement would cut the edge at
-  // that point or end a sliding fit there. Rare; such a slice is arranged whole, so that a
-  // narrowed slice is the whole one but for where a left-out curve's point joins a vertex
-  // (within the geometric epsilon: the vertex may stand at that point instead). Meeting an
-  // edge at its ends, as contact segments of neighbouring features do, cuts nothing.
-  bool left_out_meets_realizable() {
-    if (scratch_.left_out.empty()) return false;
-    const double reach = kNarrowedReachPerGeometric * pair_.tol.geometric;
-    const auto inside = [&](const Curve& c, const IntersectionHit& h) {
-      return h.is_piece || (distance(h.point, c.from) > reach && distance(h.point, c.to) > reach);
-    };
-    std::vector<Box>& boxes = scratch_.left_out_boxes;
-    boxes.clear();
-    Box all;
-    for (int id : scratch_.left_out) {
-      boxes.push_back(bounding_box(slice_.contact_segments[size_t(id)].curve).inflated(reach));
-      all.add(boxes.back());
-    }
-    const auto near = [&](const Curve& c, const Box& box, bool point) {
-      if (!box.overlaps(all)) return false;
-      for (size_t k = 0; k < boxes.size(); ++k) {
-        if (!box.overlaps(boxes[k])) continue;
-        const Curve& other = slice_.contact_segments[size_t(scratch_.left_out[k])].curve;
-        if (point) {
-          if (distance_to_curve(other, c.from) <= reach) return true;
-          continue;
-        }
-        const Intersection r = intersect(c, other, reach);
-        for (int h = 0; h < r.count; ++h)
-          if (inside(c, r.hits[h])) return true;
-      }
-      return false;
-    };
-    const size_t edges = arr_->edges.size();
-    for (size_t e = 0; e < edges; ++e)
-      if ((realizable_[e] || scratch_.label_sides[e] == (kBlockedLeft | kBlockedRight)) &&
-          near(arr_->edges[e].curve, scratch_.arrangements.edge_box(int(e)), false))
-        return true;
-    for (const DegenerateContact& d : slice_.degenerate)
-      if (near(d.curve, bounding_box(d.curve), d.is_point)) return true;
-    return false;
   }
 
   // Whether a label along face f's boundary puts blocked space in f (and not on the other
@@ -420,7 +360,6 @@ class SliceBuilder {
   ContactMaker& contacts_;
   std::optional<PlacementTester>& tester_;
   double theta_;
-  const ArrangedContacts* arranged_;
   Slice slice_;
   const Arrangement* arr_ = nullptr;
   std::vector<char>& blocked_;     // per face
@@ -466,35 +405,6 @@ Slicer& Slicer::operator=(Slicer&&) noexcept = default;
 Slice Slicer::slice(double theta) {
   State& s = *state_;
   return SliceBuilder(s.pair, s.contacts, s.tester, s.scratch, theta).build();
-}
-
-bool ArrangedContacts::takes(const ContactSegment& s) const {
-  if (std::binary_search(labels.begin(), labels.end(),
-                         SegmentLabel{s.moving_feature, s.fixed_feature}))
-    return true;
-  if (through.empty()) return false;
-  // A box around the curve, loose for an arc (its circle's) but cheap, rules out most points
-  // before their distance.
-  const Curve& c = s.curve;
-  Box box;
-  if (c.is_arc()) {
-    box.add(c.center - Vec2{c.radius, c.radius});
-    box.add(c.center + Vec2{c.radius, c.radius});
-  } else {
-    box.add(c.from);
-    box.add(c.to);
-  }
-  box = box.inflated(reach);
-  for (const Vec2 p : through)
-    if (p.x >= box.lo.x && p.x <= box.hi.x && p.y >= box.lo.y && p.y <= box.hi.y &&
-        distance_to_curve(c, p) <= reach)
-      return true;
-  return false;
-}
-
-Slice Slicer::slice(double theta, const ArrangedContacts& may_be_realizable) {
-  State& s = *state_;
-  return SliceBuilder(s.pair, s.contacts, s.tester, s.scratch, theta, &may_be_realizable).build();
 }
 
 // One-shot slices reuse this thread's working buffers. Fresh buffers for every call cost more

@@ -107,116 +107,8 @@ void for_each_index_parallel(const Pair& pair, size_t count, int threads,
                                         [&](size_t i, SlicerWorker& w) { slice_at(i, w.slicer); });
 }
 
-namespace {
-// Appends the slice's realizable labels, sorted, each once (realizable_labels).
-void append_realizable_labels(const Slice& slice, std::vector<char>& marked,
-                              std::vector<SegmentLabel>& out) {
-  const size_t first = out.size();
-  mark_realizable_segments(slice, marked);
-  for (size_t id = 0; id < marked.size(); ++id)
-    if (marked[id]) {
-      const ContactSegment& s = slice.contact_segments[id];  // ids number the segments
-      out.push_back({s.moving_feature, s.fixed_feature});
-    }
-  std::sort(out.begin() + first, out.end());
-  out.erase(std::unique(out.begin() + first, out.end()), out.end());
-}
-
-// What each critical orientation says about the labels that can change there: those its
-// criticalities name (sorted, each once) and the configurations where they happen.
-struct Events {
-  std::vector<SegmentLabel> named;
-  std::vector<Vec2> at;
-};
-
-std::vector<Events> events_of(const CriticalSet& criticals, double merge) {
-  std::vector<Events> out;
-  for (const CriticalOrientation& o : criticals.orientations) {
-    Events& e = out.emplace_back();
-    for (const Criticality& c : o.criticalities) {
-      e.at.push_back(c.at);
-      for (const FeaturePairRef& p : c.pairs)
-        e.named.push_back({p.moving_feature, p.fixed_feature});
-    }
-    std::sort(e.named.begin(), e.named.end());
-    e.named.erase(std::unique(e.named.begin(), e.named.end()), e.named.end());
-    // Several equations find one event (an end of a on b and of b on a, a vertex with both
-    // its edges): one point of each cluster closer than `merge` serves them all.
-    std::vector<Vec2> kept;
-    for (const Vec2 p : e.at)
-      if (std::none_of(kept.begin(), kept.end(), [&](Vec2 q) { return distance(p, q) <= merge; }))
-        kept.push_back(p);
-    e.at = std::move(kept);
-  }
-  return out;
-}
-
-// Consecutive slices from scratch (theta order) taken by one thread: the first arranges every
-// contact segment, each next one only those that can be realizable there. Fixed, so the
-// result does not depend on the thread count; long enough that few slices arrange
-// everything, short enough to spread the runs over the cores.
-constexpr size_t kNarrowedRun = 16;
-
-// A run of slices from scratch, `run` (plan indices, theta order), each passed to store.
-// Where a label starts or stops being realizable, the contact structure changes at some
-// configuration: a criticality there, whose curves all pass through it (those it names, and
-// any other ending or crossing there: contact segments of neighbouring features share ends).
-// Between two consecutive slices of the run lies at most the critical orientation of the
-// second's interval (a critical slice's own, or that of the interval it opens), since every
-// critical orientation and every interval has a slice from scratch. So the slice's
-// realizable labels are among the last slice's, those the orientation names and those of
-// the contact segments through its criticalities' configurations at the orientation: for a
-// critical slice its own segments there, for the slice after it those of the critical slice.
-// The others are listed but not arranged (Slicer::slice).
-void slice_run(std::span<const size_t> run, const std::vector<Planned>& plan,
-               const std::vector<Events>& events, double reach, bool narrow, Slicer& slicer,
-               const std::function<void(size_t, Slice)>& store) {
-  std::vector<SegmentLabel> last, arranged;
-  std::vector<char> marked;
-  for (size_t k = 0; k < run.size(); ++k) {
-    const Planned& p = plan[run[k]];
-    // With no critical orientation at all, the whole turn is one interval with no events.
-    const size_t interval = static_cast<size_t>(p.interval);
-    const Events none;
-    const Events& here = interval < events.size() ? events[interval] : none;
-    const bool critical = p.kind == SliceKind::critical;
-    Slice slice;
-    if (k == 0 || !narrow) {
-      slice = slicer.slice(p.theta);
-    } else {
-      arranged.clear();
-      std::set_union(last.begin(), last.end(), here.named.begin(), here.named.end(),
-                     std::back_inserter(arranged));
-      ArrangedContacts take{arranged, {}, reach};
-      if (critical) take.through = here.at;
-      slice = slicer.slice(p.theta, take);
-    }
-    if (narrow) {
-      last.clear();
-      append_realizable_labels(slice, marked, last);
-      // The next slice lies past this critical orientation: the labels through its events
-      // join those realizable here.
-      if (critical) {
-        const ArrangedContacts through{{}, here.at, reach};
-        const auto realizable = static_cast<std::ptrdiff_t>(last.size());
-        for (const ContactSegment& s : slice.contact_segments) {
-          const SegmentLabel label{s.moving_feature, s.fixed_feature};
-          if (!std::binary_search(last.begin(), last.begin() + realizable, label) &&
-              through.takes(s))
-            last.push_back(label);
-        }
-        std::sort(last.begin(), last.end());
-        last.erase(std::unique(last.begin(), last.end()), last.end());
-      }
-    }
-    store(run[k], std::move(slice));
-  }
-}
-}  // namespace
-
 std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Planned>& plan,
-                                       const CriticalSet& criticals, int threads, bool evaluate,
-                                       bool narrow, const ProgressReport& progress,
+                                       int threads, bool evaluate, const ProgressReport& progress,
                                        KnownModels* models) {
   std::vector<SpaceSlice> out(plan.size());
   if (models) models->assign(plan.size(), std::nullopt);
@@ -242,13 +134,8 @@ std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Plann
     else
       first.push_back(i);
   }
-  const std::vector<Events> events = events_of(criticals, pair.tol.criticality);
-  const double reach = kEventReachPerCriticality * pair.tol.criticality;
-  const size_t runs = (first.size() + kNarrowedRun - 1) / kNarrowedRun;
-  for_each_index_parallel(pair, runs, threads, [&](size_t r, Slicer& s) {
-    const size_t begin = r * kNarrowedRun, end = std::min(first.size(), begin + kNarrowedRun);
-    slice_run(std::span<const size_t>(first.data() + begin, end - begin), plan, events, reach,
-              narrow, s, [&](size_t i, Slice slice) { store(i, std::move(slice), false); });
+  for_each_index_parallel(pair, first.size(), threads, [&](size_t k, Slicer& s) {
+    store(first[k], s.slice(plan[first[k]].theta), false);
   });
   for_each_index_parallel<SliceWorker>(pair, later.size(), threads, [&](size_t k, SliceWorker& w) {
     if (later[k].empty()) return;
@@ -264,6 +151,22 @@ std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Plann
   });
   return out;
 }
+
+namespace {
+// Appends the slice's realizable labels, sorted, each once (realizable_labels).
+void append_realizable_labels(const Slice& slice, std::vector<char>& marked,
+                              std::vector<SegmentLabel>& out) {
+  const size_t first = out.size();
+  mark_realizable_segments(slice, marked);
+  for (size_t id = 0; id < marked.size(); ++id)
+    if (marked[id]) {
+      const ContactSegment& s = slice.contact_segments[id];  // ids number the segments
+      out.push_back({s.moving_feature, s.fixed_feature});
+    }
+  std::sort(out.begin() + first, out.end());
+  out.erase(std::unique(out.begin() + first, out.end()), out.end());
+}
+}  // namespace
 
 // Slice i to slice i + 1, and the last back to the first: theta = -pi and pi are one slice.
 // Every slice's labels go into one buffer (slice i's from start[i] to start[i + 1]): slices
@@ -355,9 +258,9 @@ SlicedSpace compute_space(const Pair& pair, const SpaceOptions& options) {
   space.reach = contact_reach(pair);
   space.max_step = interpolation_step(space.reach, pair.tol.contact);
   detail::KnownModels models;
-  space.slices = detail::compute_slices(pair, detail::plan_slices(space.criticals, space.max_step),
-                                        space.criticals, options.threads, options.evaluate_slices,
-                                        options.narrow_arrangements, options.progress, &models);
+  space.slices =
+      detail::compute_slices(pair, detail::plan_slices(space.criticals, space.max_step),
+                             options.threads, options.evaluate_slices, options.progress, &models);
   space.correspondence = detail::slice_correspondences(space.slices);
   report("topology", 0, 1);
   space.topology = detail::compute_topology(

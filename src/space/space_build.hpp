@@ -36,12 +36,10 @@ using KnownModels = std::vector<std::optional<std::optional<BoundaryModel>>>;
 // The slices at the planned orientations, in parallel (`threads` as in SpaceOptions), each
 // stored at its own index: the same whatever the thread count. Intermediate slices are
 // evaluated from their interval's representative (SpaceOptions::evaluate_slices) when
-// `evaluate`; slices from scratch arrange only the labels their neighbour and `criticals`
-// allow (SpaceOptions::narrow_arrangements) when `narrow`; the representatives' models go
-// into `models` when given.
+// `evaluate`; the representatives' models go into `models` when given.
 std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<PlannedSlice>& plan,
-                                       const CriticalSet& criticals, int threads, bool evaluate,
-                                       bool narrow, const ProgressReport& progress = {},
+                                       int threads, bool evaluate,
+                                       const ProgressReport& progress = {},
                                        KnownModels* models = nullptr);
 
 // compute_topology, taking the side slices' models from `known` where they were built.
