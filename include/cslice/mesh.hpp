@@ -60,6 +60,11 @@ struct MeshStats {
   int branched_cycles = 0;
   int degenerate_joins = 0;
   int straight_joins = 0;
+  // Walks joined across a lens: two contact curves crossing at a shallow angle that become
+  // tangent and part within the critical orientation's angle, just beyond its slice (a merge
+  // or split there, not yet at it). The walk jumps along one curve between the lens's ends and
+  // back along the other, so the two straight edges pair up; not a guess.
+  int lens_joins = 0;
   // Refinement (Pair overload only): slices computed between stored ones, and strips left
   // further than the tolerances from the true surface because refining them would have taken
   // slices closer than side_slice_angle to a critical one (or made the stitching worse).

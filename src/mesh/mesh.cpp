@@ -43,6 +43,7 @@ void add(MeshStats& a, const MeshStats& b) {
   a.capped_cycles += b.capped_cycles;
   a.degenerate_joins += b.degenerate_joins;
   a.straight_joins += b.straight_joins;
+  a.lens_joins += b.lens_joins;
   a.refined_slices += b.refined_slices;
   a.unconverged_strips += b.unconverged_strips;
   a.max_deviation = std::max(a.max_deviation, b.max_deviation);

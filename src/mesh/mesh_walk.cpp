@@ -236,6 +236,9 @@ class Walker {
   };
   std::map<int, Claim> claim_darts(const std::vector<const Cycle*>& r_cycles,
                                    const std::vector<const Cycle*>& c_cycles) const;
+  void drop_open_branches(const std::vector<const Cycle*>& c_cycles,
+                          std::map<int, Claim>& owner) const;
+  bool degenerate_link(int u, int v) const;
   // Walks the cycles of R linked to the cycles of C through one event. In the first pass
   // (`left` given) what finds no partner is left over; in the second it is closed.
   void walk_group(const std::vector<const Cycle*>& r_cycles,
@@ -275,10 +278,64 @@ std::map<int, Walker::Claim> Walker::claim_darts(const std::vector<const Cycle*>
   return owner;
 }
 
+// Whether a degenerate dart of C runs between vertices u and v, either way.
+bool Walker::degenerate_link(int u, int v) const {
+  for (int d = c_.boundary_pieces; d < static_cast<int>(c_.pieces.size()); ++d) {
+    const Piece& p = c_.pieces[d];
+    if ((p.first() == u && p.last() == v) || (p.first() == v && p.last() == u)) return true;
+  }
+  return false;
+}
+
+// The darts of one cycle of C owned by different regular cycles form branches: runs of
+// consecutive owned darts of one owner, each with the loose darts after it. At a real
+// branching (the pinch of a merge or a split at C) every branch closes on itself, at the
+// pinch vertex or through a degenerate dart, and the regular cycles' walks meet there. A
+// branch that does not close is a label matched across two components that meet only just
+// beyond C, within its critical angle (stress seed 133605: a piece new at C given to the
+// other component's piece of that label). Its darts are left loose, to follow their
+// neighbours in the largest branch.
+void Walker::drop_open_branches(const std::vector<const Cycle*>& c_cycles,
+                                std::map<int, Claim>& owner) const {
+  struct Branch {
+    int first = 0, count = 0;  // into `owned`
+    bool closed = false;
+  };
+  for (const Cycle* y : c_cycles) {
+    const int n = static_cast<int>(y->size());
+    std::vector<int> owned;  // positions in y
+    for (int k = 0; k < n; ++k)
+      if (owner.count((*y)[k])) owned.push_back(k);
+    const int m = static_cast<int>(owned.size());
+    const auto owner_at = [&](int i) { return owner.at((*y)[owned[i]]).cycle; };
+    std::vector<int> starts;  // indices into `owned` where a branch starts
+    for (int i = 0; i < m; ++i)
+      if (owner_at(i) != owner_at((i + m - 1) % m)) starts.push_back(i);
+    if (starts.size() < 2) continue;
+    std::vector<Branch> branches;
+    for (size_t b = 0; b < starts.size(); ++b) {
+      const int i0 = starts[b], i1 = starts[(b + 1) % starts.size()];
+      const int last = (owned[i1] + n - 1) % n;  // the dart before the next branch
+      const int from = c_.pieces[(*y)[owned[i0]]].first(), to = c_.pieces[(*y)[last]].last();
+      branches.push_back({i0, (i1 - i0 + m) % m, from == to || degenerate_link(from, to)});
+    }
+    if (std::all_of(branches.begin(), branches.end(), [](const Branch& b) { return b.closed; }))
+      continue;
+    const auto largest =
+        std::max_element(branches.begin(), branches.end(),
+                         [](const Branch& a, const Branch& b) { return a.count < b.count; });
+    for (auto b = branches.begin(); b != branches.end(); ++b) {
+      if (b == largest || b->closed) continue;
+      for (int j = 0; j < b->count; ++j) owner.erase((*y)[owned[(b->first + j) % m]]);
+    }
+  }
+}
+
 void Walker::walk_group(const std::vector<const Cycle*>& r_cycles,
                         const std::vector<const Cycle*>& c_cycles, Leftovers* left) {
   const SampledSlice &r = r_, &c = c_;
-  const std::map<int, Claim> owner = claim_darts(r_cycles, c_cycles);
+  std::map<int, Claim> owner = claim_darts(r_cycles, c_cycles);
+  drop_open_branches(c_cycles, owner);
   // A dart with no such piece (it appears or vanishes exactly at the critical slice) is loose:
   // it follows the owned dart before it in its cycle. A cycle of C with no owned dart at all
   // has no partner on R's side: left over for the second pass, then capped.
@@ -393,6 +450,11 @@ void append(std::vector<int>& line, const Piece& d) {
 std::vector<Walker::Step> Walker::join(const Cycle& cycle, const std::vector<Step>& steps) {
   std::vector<Step> joined;
   const int n = static_cast<int>(steps.size());
+  struct Jump {
+    int from, to;
+    SegmentLabel label;
+  };
+  std::vector<Jump> jumps;  // joins with no degenerate dart: straight edges
   for (int k = 0; k < n; ++k) {
     const Step &x = steps[k], &y = steps[(k + 1) % n];
     joined.push_back(x);
@@ -402,7 +464,7 @@ std::vector<Walker::Step> Walker::join(const Cycle& cycle, const std::vector<Ste
     for (int d = c_.boundary_pieces; d < static_cast<int>(c_.pieces.size()) && bridge < 0; ++d)
       if (!dart_used_[d] && c_.pieces[d].first() == from && c_.pieces[d].last() == to) bridge = d;
     if (bridge < 0) {
-      ++out_.stats.straight_joins;
+      jumps.push_back({from, to, c_.pieces[x.piece].label});
       continue;
     }
     dart_used_[bridge] = 1;
@@ -416,6 +478,14 @@ std::vector<Walker::Step> Walker::join(const Cycle& cycle, const std::vector<Ste
     } else {
       joined.push_back({x.at, bridge, x.loose || !(label == r_.pieces[cycle[x.at]].label)});
     }
+  }
+  // A jump paired with one back between the same two vertices along another label crosses a
+  // lens (MeshStats::lens_joins); any other is a guess.
+  for (const Jump& j : jumps) {
+    const bool paired = std::any_of(jumps.begin(), jumps.end(), [&](const Jump& o) {
+      return o.from == j.to && o.to == j.from && !(o.label == j.label);
+    });
+    ++(paired ? out_.stats.lens_joins : out_.stats.straight_joins);
   }
   // A loose step between two owned steps of one piece (a piece of C appearing inside one of
   // R, splitting it) belongs to that piece.
