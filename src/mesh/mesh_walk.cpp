@@ -238,7 +238,7 @@ class Walker {
                                    const std::vector<const Cycle*>& c_cycles) const;
   void drop_open_branches(const std::vector<const Cycle*>& c_cycles,
                           std::map<int, Claim>& owner) const;
-  bool degenerate_link(int u, int v) const;
+  int degenerate_dart(int from, int to, bool unused_only) const;
   // Walks the cycles of R linked to the cycles of C through one event. In the first pass
   // (`left` given) what finds no partner is left over; in the second it is closed.
   void walk_group(const std::vector<const Cycle*>& r_cycles,
@@ -278,13 +278,14 @@ std::map<int, Walker::Claim> Walker::claim_darts(const std::vector<const Cycle*>
   return owner;
 }
 
-// Whether a degenerate dart of C runs between vertices u and v, either way.
-bool Walker::degenerate_link(int u, int v) const {
-  for (int d = c_.boundary_pieces; d < static_cast<int>(c_.pieces.size()); ++d) {
-    const Piece& p = c_.pieces[d];
-    if ((p.first() == u && p.last() == v) || (p.first() == v && p.last() == u)) return true;
-  }
-  return false;
+// The first degenerate dart of C from vertex `from` to vertex `to` (among those no walk has
+// used yet, when asked), or -1.
+int Walker::degenerate_dart(int from, int to, bool unused_only) const {
+  for (int d = c_.boundary_pieces; d < static_cast<int>(c_.pieces.size()); ++d)
+    if ((!unused_only || !dart_used_[d]) && c_.pieces[d].first() == from &&
+        c_.pieces[d].last() == to)
+      return d;
+  return -1;
 }
 
 // The darts of one cycle of C owned by different regular cycles form branches: runs of
@@ -317,7 +318,9 @@ void Walker::drop_open_branches(const std::vector<const Cycle*>& c_cycles,
       const int i0 = starts[b], i1 = starts[(b + 1) % starts.size()];
       const int last = (owned[i1] + n - 1) % n;  // the dart before the next branch
       const int from = c_.pieces[(*y)[owned[i0]]].first(), to = c_.pieces[(*y)[last]].last();
-      branches.push_back({i0, (i1 - i0 + m) % m, from == to || degenerate_link(from, to)});
+      const bool closed = from == to || degenerate_dart(from, to, false) >= 0 ||
+                          degenerate_dart(to, from, false) >= 0;
+      branches.push_back({i0, (i1 - i0 + m) % m, closed});
     }
     if (std::all_of(branches.begin(), branches.end(), [](const Branch& b) { return b.closed; }))
       continue;
@@ -460,9 +463,7 @@ std::vector<Walker::Step> Walker::join(const Cycle& cycle, const std::vector<Ste
     joined.push_back(x);
     const int from = c_.pieces[x.piece].last(), to = c_.pieces[y.piece].first();
     if (from == to) continue;
-    int bridge = -1;
-    for (int d = c_.boundary_pieces; d < static_cast<int>(c_.pieces.size()) && bridge < 0; ++d)
-      if (!dart_used_[d] && c_.pieces[d].first() == from && c_.pieces[d].last() == to) bridge = d;
+    const int bridge = degenerate_dart(from, to, true);
     if (bridge < 0) {
       jumps.push_back({from, to, c_.pieces[x.piece].label});
       continue;
