@@ -321,6 +321,39 @@ TEST(ClassifyAnalytic, PinExactlyFillingHole) {
   }
 }
 
+// A pin in a slot of exactly its width, the slot turned by an arbitrary angle: every place
+// along the slot's straight part touches both sides (a sliding fit), nothing is blocked. The
+// pin's far point reaches the centre of the slot's rounded end when the pin is at the
+// middle, on that half circle's chord, which the containment test put outside the opening
+// (designed stress pair 33).
+TEST(ClassifyAnalytic, PinSlidesAlongATurnedSlotOfItsWidth) {
+  int contacts = 0;
+  for (int k = 0; k < 60; ++k) {
+    const double turn = 0.1047 * k + 0.0123, c = std::cos(turn), s = std::sin(turn);
+    const auto at = [&](double u, double v) {
+      return std::array<double, 2>{c * u - s * v, s * u + c * v};
+    };
+    const auto p0 = at(-0.5, -0.5), p1 = at(0.5, -0.5), p2 = at(0.5, 0.5), p3 = at(-0.5, 0.5);
+    const json slot =
+        json::array({{p0[0], p0[1]}, {p1[0], p1[1], 1.0}, {p2[0], p2[1]}, {p3[0], p3[1], 1.0}});
+    const Pair pair =
+        make_pair(part_json({circle_loop(-0.25, 0, 0.5)}), part_json({slot}, true), std::nullopt);
+    for (const double theta : {0.0, 1.5707963267948966, 1.1938052083641217, -2.5}) {
+      // The pin's centre, at body (-0.25, 0), turned by theta: placed on the slot's axis.
+      const double cx = -0.25 * std::cos(theta), cy = -0.25 * std::sin(theta);
+      for (const double along : {-0.5, -0.2, 0.0, 0.3, 0.5}) {
+        const auto q = at(along, 0.0);
+        EXPECT_EQ(to_string(classify(pair, {q[0] - cx, q[1] - cy, theta})), "contact")
+            << turn << " " << theta << " " << along;
+        ++contacts;
+      }
+      const auto off = at(0.0, 1e-3);
+      EXPECT_EQ(to_string(classify(pair, {off[0] - cx, off[1] - cy, theta})), "blocked");
+    }
+  }
+  EXPECT_EQ(contacts, 60 * 4 * 5);
+}
+
 TEST(ClassifyAnalytic, ContainmentWithoutBoundaryContactIsBlocked) {
   const json small = part_json({rect_loop(-0.5, -0.5, 0.5, 0.5)});
   const json big = part_json({rect_loop(-5, -5, 5, 5)});

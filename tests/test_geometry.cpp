@@ -315,6 +315,30 @@ TEST(Containment, FullCircleInsideALongerCycleCountsItsDisc) {
   EXPECT_TRUE(loop_encloses(walk, {2, 2}));       // the square only
 }
 
+// A stadium (a 1 x 1 bar with half-circle ends) turned by many angles: the centre of each
+// rounded end lies on that half circle's chord, where a pin of the stadium's width reaches
+// when it touches both sides. The sector check, computed otherwise than the chord's side,
+// put such points outside the half circle's segment for about half of the angles, and so
+// outside the part (designed stress pair 33: classify called a sliding fit blocked).
+TEST(Containment, PointsOnTheChordOfAHalfCircleAreInside) {
+  int checked = 0;
+  for (int k = 0; k < 360; ++k) {
+    const double a = 0.0174 * k + 0.003, c = std::cos(a), s = std::sin(a);
+    const auto at = [&](double u, double v) { return Vec2{c * u - s * v, s * u + c * v}; };
+    const Vec2 p0 = at(0.5, -0.5), p1 = at(0.5, 0.5), p2 = at(-0.5, 0.5), p3 = at(-0.5, -0.5);
+    const Curve loop[] = {make_bulge_arc(p0, p1, 1.0), make_segment(p1, p2),
+                          make_bulge_arc(p2, p3, 1.0), make_segment(p3, p0)};
+    for (const double t : {0.5, 0.25, 0.75, 0.5 + 1e-9, 0.5 - 1e-9}) {
+      ASSERT_TRUE(loop_encloses(loop, lerp(p0, p1, t))) << k << " " << t;
+      ASSERT_TRUE(loop_encloses(loop, lerp(p2, p3, t))) << k << " " << t;
+      checked += 2;
+    }
+    EXPECT_FALSE(loop_encloses(loop, at(1.2, 0.0))) << k;
+    EXPECT_TRUE(loop_encloses(loop, at(0.9, 0.0))) << k;
+  }
+  EXPECT_EQ(checked, 3600);
+}
+
 TEST(Containment, ATinyArcWithSnappedEndsTogglesOnlyNearItself) {
   // A 1.4e-8 piece of an arc of radius 17 (sweep 8e-10) whose ends an arrangement snapped to
   // vertices about 1e-8 away: its chord now points nearly along the radius, and

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include "cslice/classify.hpp"
 #include "cslice/critical.hpp"
+#include "cslice/equivalence.hpp"
 #include "cslice/slice.hpp"
 #include "cslice/slice_io.hpp"
 #include "slice/close_points.hpp"
@@ -154,6 +155,33 @@ TEST(SliceDegenerate, PegInSlotOfItsOwnWidthLeavesAContactCurve) {
   for (const DegenerateContact& d : s.degenerate)
     if (!d.is_point) length_total += curve_length(d.curve);
   EXPECT_NEAR(length_total, 4.0, 1e-9);
+}
+
+// A pin in a slot of exactly its width (designed stress pair 33: the slot turned by an
+// arbitrary angle). At every orientation the pin slides along the slot's axis, touching both
+// sides: a sliding fit one unit long, its two ends where the pin also meets the rounded ends,
+// and every slice equivalent to every other. The placement test put the middle of the fit
+// in blocked space at about half of the orientations (containment at the chord of a half
+// circle), and those slices lost the fit.
+TEST(SliceDegenerate, PinInATurnedSlotOfItsWidthSlidesAtEveryOrientation) {
+  const std::string json =
+      R"({"name":"designed-round-in-slot","moving":{"loops":[{"circle":[-0.25,0,0.5]}]},)"
+      R"("fixed":{"enclosure":true,"loops":[[[0.68915349959494865,0.15832704758200727],)"
+      R"([-0.15832704758200727,0.68915349959494865,1],[-0.68915349959494865,)"
+      R"(-0.15832704758200727],[0.15832704758200727,-0.68915349959494865,1]]]}})";
+  const Pair pair = *parse_pair(json, "pin-in-slot").pair;
+  const Slice first = compute_slice(pair, 0.0);
+  for (int k = 0; k < 48; ++k) {
+    const double theta = -kPi + kTwoPi * k / 48 + 0.001 * k;
+    const Slice s = compute_slice(pair, theta);
+    double fit = 0.0;
+    for (const DegenerateContact& d : s.degenerate)
+      if (!d.is_point) fit += curve_length(d.curve);
+    EXPECT_NEAR(fit, 1.0, 1e-9) << theta;
+    EXPECT_TRUE(s.free_components.empty()) << theta;
+    const EquivalenceResult e = slices_equivalent(first, s);
+    EXPECT_TRUE(e.equivalent) << theta << ": " << e.difference;
+  }
 }
 
 TEST(SliceDegenerate, TriangleInTriangularHoleOfItsOwnSize) {

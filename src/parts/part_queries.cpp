@@ -42,11 +42,19 @@ bool ray_crosses_chord(Vec2 a, Vec2 b, Vec2 p, int side) {
 // piece of a contact arc of radius 17 toggled points 0.8 away). The sector, bounded by the
 // rays through the ends, stays a sliver along such an arc. For an arc whose ends lie on its
 // circle the segment is inside the sector, so the test changes nothing there.
+// Only arcs of at most a quarter turn are checked. The sector's rays leave the chord at its
+// ends at an angle of (pi - sweep) / 2, and computed by other operations than the chord's
+// side they may disagree with it near them: for a half circle both rays lie along the chord,
+// and a point on the chord (the centre of a slot's rounded end, where a pin of the slot's
+// width reaches) came out on the arc's side but outside the sector, outside the part. Past a
+// quarter turn the piece is long beside its snapping (or its circle within eps of it), so its
+// chord cannot point away from the arc.
+constexpr double kSectorCheckedSweep = 0.5 * kPi;
 bool in_circular_segment(const Curve& arc, Vec2 p, int side) {
   const Vec2 q = p - arc.center;
   if (length_squared(q) >= arc.radius * arc.radius) return false;
   if (!(arc.sweep > 0.0 ? side < 0 : side > 0)) return false;
-  if (std::fabs(arc.sweep) > kPi) return true;
+  if (std::fabs(arc.sweep) > kSectorCheckedSweep) return true;
   const Vec2 a = arc.from - arc.center, b = arc.to - arc.center;
   return arc.sweep > 0.0 ? cross(a, q) >= 0.0 && cross(q, b) >= 0.0
                          : cross(a, q) <= 0.0 && cross(q, b) <= 0.0;
