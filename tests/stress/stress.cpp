@@ -1,6 +1,8 @@
 // cslice_stress: a bug hunt over many pairs, beyond what the test suite can afford to run.
 //
 //   cslice_stress --seeds FIRST LAST    random curved pairs FIRST..LAST-1 (testkit::stress_pair)
+//   cslice_stress --designed FIRST LAST designed pairs FIRST..LAST-1 (testkit::designed_pair:
+//                                       unit grids, perfect fits, symmetric parts)
 //   cslice_stress PAIR.json ...         pair files (designed fits, imported parts)
 //
 // Each pair goes through the checks the tests make on a few: the completeness of its
@@ -27,6 +29,7 @@
 #include "support/band.hpp"
 #include "support/completeness.hpp"
 #include "support/crossings.hpp"
+#include "support/designed_pairs.hpp"
 #include "support/failures.hpp"
 #include "support/mesh_census.hpp"
 #include "support/random_parts.hpp"
@@ -38,6 +41,7 @@ namespace {
 
 std::vector<std::string> g_files;
 unsigned g_first = 0, g_last = 0;
+unsigned g_designed_first = 0, g_designed_last = 0;
 
 // Closed and consistently oriented once the seam at theta = pi is identified, as
 // tests/test_mesh.cpp requires of its cases.
@@ -93,16 +97,24 @@ bool check_pair(const Pair& pair, unsigned seed, const std::string& name) {
   return testkit::failures_so_far() == before;
 }
 
-TEST(Stress, Pairs) {
-  int checked = 0, failed = 0;
-  for (unsigned seed = g_first; seed < g_last; ++seed) {
-    const testkit::RandomPair p = testkit::stress_pair(seed);
+// Checks the pairs make(seed) for seeds in [first, last), named "<kind> <seed>"; counts them.
+void check_seeds(unsigned first, unsigned last, testkit::RandomPair (*make)(unsigned),
+                 const std::string& kind, int& checked, int& failed) {
+  for (unsigned seed = first; seed < last; ++seed) {
+    const testkit::RandomPair p = make(seed);
     ++checked;
-    if (!check_pair(p.pair, seed, "seed " + std::to_string(seed))) {
+    if (!check_pair(p.pair, seed, kind + " " + std::to_string(seed))) {
       ++failed;
-      std::cout << "FAILED seed " << seed << ": " << p.json << "\n";
+      std::cout << "FAILED " << kind << " " << seed << ": " << p.json << "\n";
     }
   }
+}
+
+TEST(Stress, Pairs) {
+  int checked = 0, failed = 0;
+  check_seeds(g_first, g_last, testkit::stress_pair, "seed", checked, failed);
+  check_seeds(g_designed_first, g_designed_last, testkit::designed_pair, "designed", checked,
+              failed);
   for (const std::string& file : g_files) {
     LoadResult r = load_pair(file);
     if (!r.ok()) {
@@ -128,12 +140,17 @@ int main(int argc, char** argv) {
       g_first = unsigned(std::stoul(argv[i + 1]));
       g_last = unsigned(std::stoul(argv[i + 2]));
       i += 2;
+    } else if (arg == "--designed" && i + 2 < argc) {
+      g_designed_first = unsigned(std::stoul(argv[i + 1]));
+      g_designed_last = unsigned(std::stoul(argv[i + 2]));
+      i += 2;
     } else {
       g_files.push_back(arg);
     }
   }
-  if (g_files.empty() && g_first >= g_last) {
-    std::cerr << "usage: cslice_stress --seeds FIRST LAST | PAIR.json ...\n";
+  if (g_files.empty() && g_first >= g_last && g_designed_first >= g_designed_last) {
+    std::cerr
+        << "usage: cslice_stress --seeds FIRST LAST | --designed FIRST LAST | PAIR.json ...\n";
     return 2;
   }
   return RUN_ALL_TESTS();
