@@ -184,10 +184,18 @@ class MeshBuilder {
 
   SampledSlice sample_stored(int s, double theta) {
     const int n = static_cast<int>(space_.slices.size());
-    const SamplingOptions o = sampling(std::max(gap_after(s), gap_after((s + n - 1) % n)));
+    SamplingOptions o = sampling(std::max(gap_after(s), gap_after((s + n - 1) % n)));
+    o.weld_across_cycles = space_.slices[s].kind == SliceKind::critical;
     SampledSlice out = sample_slice(space_.slices[s].slice, theta, o, store_);
     out.transition = transition_at(s);
-    if (out.transition) find_coinciding_labels(out);
+    if (out.transition) {
+      const auto& orientations = space_.criticals.orientations;
+      const int k = out.transition->critical;
+      find_coinciding_labels(out, pair_,
+                             k >= 0 && k < static_cast<int>(orientations.size())
+                                 ? &orientations[static_cast<size_t>(k)]
+                                 : nullptr);
+    }
     const auto& topo = space_.topology;
     const size_t comps = out.cycles.size();
     out.cells =
@@ -235,7 +243,9 @@ class MeshBuilder {
   // cells of the regular one of them (by their samples, or by their boundary labels).
   SampledSlice refined(const SampledSlice& a, const SampledSlice& b, const Slice& truth) {
     const double theta = 0.5 * (a.theta + b.theta);
-    SampledSlice out = sample_slice(truth, theta, sampling(b.theta - theta), store_);
+    SamplingOptions o = sampling(b.theta - theta);
+    o.weld_across_cycles = false;  // halfway between two slices: regular
+    SampledSlice out = sample_slice(truth, theta, o, store_);
     const SampledSlice& r = a.critical() ? b : a;
     for (const FreeComponent& comp : truth.free_components) {
       int k = r.slice->locate(comp.sample);

@@ -111,6 +111,15 @@ Score align_from(int n, int m, int si, int sj, const Weight& weight, std::vector
   return dp[at(n, m)];
 }
 
+// How well dart d of critical slice c answers to a regular piece labelled l: 1 for its own
+// label, 1/2 for the label of a segment coinciding with it (find_coinciding_labels), else 0.
+double label_weight(const SampledSlice& c, int d, SegmentLabel l) {
+  if (c.pieces[d].label == l) return 1.0;
+  if (d >= static_cast<int>(c.coinciding.size())) return 0.0;
+  const auto& alt = c.coinciding[d];
+  return std::find(alt.begin(), alt.end(), l) == alt.end() ? 0.0 : 0.5;
+}
+
 // The order-preserving alignment of the darts of critical cycle y with the pieces of regular
 // cycle x: for each dart, the position of its piece in x, or -1. A match scores 1 for the same
 // label, 1/2 for the label of a coinciding segment; among alignments of equal score, the
@@ -120,15 +129,10 @@ std::vector<int> align_darts(const SampledSlice& c, const Cycle& y, const Sample
                              const Cycle& x) {
   const int n = static_cast<int>(y.size()), m = static_cast<int>(x.size());
   const auto weight = [&](int i, int j) -> std::optional<Score> {
-    const Piece &d = c.pieces[y[i]], &p = r.pieces[x[j]];
-    double w = 1.0;
-    if (!(d.label == p.label)) {
-      if (y[i] >= static_cast<int>(c.coinciding.size())) return std::nullopt;
-      const auto& alt = c.coinciding[y[i]];
-      if (std::find(alt.begin(), alt.end(), p.label) == alt.end()) return std::nullopt;
-      w = 0.5;
-    }
-    return Score{w, -dart_distance(d, p)};
+    const Piece& p = r.pieces[x[j]];
+    const double w = label_weight(c, y[i], p.label);
+    if (w == 0.0) return std::nullopt;
+    return Score{w, -dart_distance(c.pieces[y[i]], p)};
   };
   std::vector<SegmentLabel> ly, lx;
   for (int p : y) ly.push_back(c.pieces[p].label);
@@ -248,6 +252,7 @@ class Walker {
   std::vector<Step> join(const Cycle& cycle, const std::vector<Step>& steps);
   void emit_walk(const Cycle& cycle, std::vector<Step> steps);
   bool collapse(const Cycle& cycle);
+  void own_copy_of_ridge(size_t first_band);
   int vanishing_point(const Cycle& cycle);
   void cap(const Cycle& cycle);
   void band(std::vector<int> r_line, std::vector<double> r_coord, std::vector<int> c_line,
@@ -580,9 +585,15 @@ bool Walker::collapse(const Cycle& cycle) {
     const double d = dist(store_.xy(p.vertex));
     if (d < best) best = d, best_point = k, best_dart = -1;
   }
+  // A dart answers to a piece of the cycle by its label or a coinciding one.
+  const auto answers = [&](int d) {
+    for (int p : cycle)
+      if (label_weight(c, d, r.pieces[p].label) > 0.0) return true;
+    return false;
+  };
   for (int d = c.boundary_pieces; d + 1 < static_cast<int>(c.pieces.size()); d += 2) {
     if (dart_used_[d] || dart_used_[d + 1]) continue;
-    if (!has_label(c.pieces[d].label) && !has_label(c.pieces[d + 1].label)) continue;
+    if (!answers(d) && !answers(d + 1)) continue;
     const double e = dist(point_at(c.pieces[d].curve, 0.5));
     if (e < best) best = e, best_point = -1, best_dart = d;
   }
@@ -595,26 +606,54 @@ bool Walker::collapse(const Cycle& cycle) {
   }
   if (best_dart < 0) return false;
   ++out_.stats.collapsed_to_curve;
-  // The two darts go to the regular pieces of their labels (the nearest), or follow each other.
+  // The two darts go to the regular pieces of their labels (the best weight, then the
+  // nearest), or follow each other.
   std::vector<Step> steps;
   for (int d : {best_dart, best_dart + 1}) {
     dart_used_[d] = 1;
     int at = -1;
-    double near = std::numeric_limits<double>::infinity();
-    for (int k = 0; k < static_cast<int>(cycle.size()); ++k)
-      if (r.pieces[cycle[k]].label == c.pieces[d].label &&
-          dart_distance(c.pieces[d], r.pieces[cycle[k]]) < near) {
-        near = dart_distance(c.pieces[d], r.pieces[cycle[k]]);
+    double weight = 0.0, near = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < static_cast<int>(cycle.size()); ++k) {
+      const double w = label_weight(c, d, r.pieces[cycle[k]].label);
+      const double e = dart_distance(c.pieces[d], r.pieces[cycle[k]]);
+      if (w > weight || (w == weight && w > 0.0 && e < near)) {
+        weight = w;
+        near = e;
         at = k;
       }
+    }
     steps.push_back({at, d});
   }
   if (steps[0].at < 0 && steps[1].at < 0) steps[0].at = 0;
   for (int k = 0; k < 2; ++k)
     if (steps[k].at < 0) steps[k].at = steps[1 - k].at;
   if (steps[1].at < steps[0].at) std::swap(steps[0], steps[1]);
+  const size_t first_band = out_.bands.size();
   emit_walk(cycle, std::move(steps));
+  own_copy_of_ridge(first_band);
   return true;
+}
+
+// Free space pinched to a curve at C (a part fitting its opening exactly at one orientation
+// only) is closed from each side by a walk along the curve both ways. Sharing the curve's
+// vertices, the two sides put four triangles on each of its edges (designed pair 81: a
+// stadium in a square of its length); each side's ridge gets its own copy of the vertices
+// instead, so that each side closes on itself and the surface touches itself along the curve,
+// as the free space does. The bands from first_band on are this collapse's.
+void Walker::own_copy_of_ridge(size_t first_band) {
+  std::map<int, int> copy;
+  for (size_t b = first_band; b < out_.bands.size(); ++b) {
+    std::vector<int>& line = r_lower_ ? out_.bands[b].upper : out_.bands[b].lower;
+    for (int& v : line) {
+      const auto [it, fresh] = copy.try_emplace(v, -1);
+      if (fresh) {
+        const MeshVertex original = store_.vertices[static_cast<size_t>(v)];
+        it->second = store_.add(store_.xy(v), original.theta, original.label);
+        store_.end_label.back() = store_.end_label[static_cast<size_t>(v)];
+      }
+      v = it->second;
+    }
+  }
 }
 
 // Where a regular cycle with nothing in the critical slice to close onto vanishes: a point
@@ -633,8 +672,21 @@ int Walker::vanishing_point(const Cycle& cycle) {
     if (!seg.is_point && std::binary_search(labels.begin(), labels.end(), l))
       curves[l].push_back(&seg.curve);
   }
+  // A label missing from the slice may belong to a contact segment that vanishes or appears
+  // within the critical group (find_coinciding_labels): its segments just beside the group
+  // stand in, with the distance they may have moved.
+  double reach = kCriticalityPerGeometric * c.slice->epsilon;
+  std::vector<SegmentLabel> at_slice;
+  for (const auto& entry : curves) at_slice.push_back(entry.first);  // sorted, as the map
+  for (const ContactSegment& seg : c.beside) {
+    const SegmentLabel l{seg.moving_feature, seg.fixed_feature};
+    if (!std::binary_search(labels.begin(), labels.end(), l) ||
+        std::binary_search(at_slice.begin(), at_slice.end(), l))
+      continue;
+    curves[l].push_back(&seg.curve);
+    reach = std::max(reach, c.beside_tolerance);
+  }
   if (curves.size() < 2) return -1;
-  const double eps = c.slice->epsilon, reach = kCriticalityPerGeometric * eps;
   const auto score = [&](Vec2 q) {
     double worst = 0.0;
     for (const auto& [l, list] : curves) {
