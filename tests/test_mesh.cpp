@@ -13,6 +13,7 @@
 #include <string>
 
 #include "cslice/mesh.hpp"
+#include "mesh/mesh_internal.hpp"
 #include "support/designed_pairs.hpp"
 #include "support/examples.hpp"
 #include "support/mesh_census.hpp"
@@ -87,10 +88,10 @@ const unsigned kDartOrderSeed = 100125;
 const unsigned kLensSeed = 133605;
 // Designed pairs (testkit::designed_pair) whose meshes were not closed: a part on a unit grid
 // about a grid part turned by an arbitrary angle, where every contact segment of a cycle swaps
-// label within the critical group (13: cones; 30: a sliver vanishing to a point of curves
-// of swapped labels), and a stadium in a square of its length, pinched to a segment at the
-// quarter turns (81: edges used four times).
-const unsigned kSwappedLabelsSeed = 13, kSwappedVanishingSeed = 102, kPinchedToCurveSeed = 81;
+// label at one critical orientation (13: cones), a stadium in a square of its length, pinched
+// to a segment at the quarter turns (81: edges used four times), and a pin in channels of its
+// width whose free components touch all through every interval (93: edges used four times).
+const unsigned kSwappedLabelsSeed = 13, kPinchedToCurveSeed = 81, kTouchingSeed = 93;
 
 // Random pairs, computed once: curved star-shaped parts (some fixed parts with a hole), and
 // parts in cavities, most of them chosen because they branch (checked below).
@@ -114,7 +115,7 @@ const std::vector<Case>& random_cases() {
     }
     for (unsigned seed : {kSpikeSeeds[0], kSpikeSeeds[1], kDartOrderSeed, kLensSeed})
       out.push_back(make_case("stress-" + std::to_string(seed), testkit::stress_pair(seed).pair));
-    for (unsigned seed : {kSwappedLabelsSeed, kSwappedVanishingSeed, kPinchedToCurveSeed})
+    for (unsigned seed : {kSwappedLabelsSeed, kPinchedToCurveSeed, kTouchingSeed})
       out.push_back(
           make_case("designed-" + std::to_string(seed), testkit::designed_pair(seed).pair));
     // A bar in a pocket a little wider: near theta = 0 the free space is a thin rectangle,
@@ -141,6 +142,15 @@ const Case* stress_case(unsigned seed) {
 }
 const Case* designed_case(unsigned seed) {
   return named_case("designed-" + std::to_string(seed));
+}
+
+// The case's mesh closed (every edge shared by two triangles once each way) with no guess: no
+// cone and no straight join.
+void expect_closed_without_guess(const Case* c) {
+  ASSERT_NE(c, nullptr);
+  EXPECT_EQ(census(c->mesh).bad(), 0) << c->name;
+  EXPECT_EQ(c->mesh.stats.coned_cycles, 0) << c->name;
+  EXPECT_EQ(c->mesh.stats.straight_joins, 0) << c->name;
 }
 
 // Every case: the examples, then the random pairs.
@@ -315,39 +325,39 @@ TEST(Mesh, EveryEdgeIsSharedByTwoTrianglesOnceEachWay) {
   }
 }
 
-// Boundary pieces of the space's slices walked out and straight back by the next piece of
-// their cycle, no longer than the mesh's spike limit.
-int round_off_spikes(const SlicedSpace& space) {
-  int n = 0;
-  for (const SpaceSlice& ss : space.slices) {
-    const double eps = ss.slice.epsilon, limit = kMeshSpikePerGeometric * eps;
-    for (const FreeComponent& comp : ss.slice.free_components)
-      for (const auto& cycle : comp.boundary)
-        for (size_t k = 0; cycle.size() > 2 && k < cycle.size(); ++k) {
-          const Curve &a = cycle[k].curve, &b = cycle[(k + 1) % cycle.size()].curve;
-          const double ends = distance(a.from, a.to);  // apart: two mesh corners
-          if (ends > eps && curve_length(a) <= limit && distance(a.to, b.from) <= eps &&
-              distance(b.to, a.from) <= eps)
-            ++n;
-        }
-  }
-  return n;
-}
-
-// The spike pairs still have their spikes, and their meshes close over them (before the mesh
-// left spikes out, the strips on both sides attached to both passes: edges used four times).
+// A unit square of free space whose boundary cycle runs out along a piece 5 eps long and
+// straight back at one corner: blocked space of zero width, the round-off of a critical slice
+// where three contact curves nearly meet (stress seeds 100092 and 104195 had such spikes
+// while critical slices were taken at the middle of their group, 6 of 1,000 stress seeds
+// 104000 to 104999). Both neighbouring strips attached to both passes (edges used four
+// times); sampling leaves such a spike no longer than kMeshSpikePerGeometric epsilons out.
 TEST(Mesh, RoundOffSpikesOfCriticalSlicesAreLeftOut) {
-  int cases = 0;
-  for (const Case& c : random_cases()) {
-    if (c.name != "stress-" + std::to_string(kSpikeSeeds[0]) &&
-        c.name != "stress-" + std::to_string(kSpikeSeeds[1]))
-      continue;
-    ++cases;
-    EXPECT_GT(round_off_spikes(c.space), 0) << c.name;
-    const EdgeCensus e = census(c.mesh);
-    EXPECT_EQ(e.bad(), 0) << c.name;
+  const double eps = 1e-9;
+  const Vec2 corner{1, 1}, tip{1 + 5 * eps, 1 + 5 * eps};
+  const std::vector<Curve> cycle = {make_segment({0, 0}, {1, 0}), make_segment({1, 0}, corner),
+                                    make_segment(corner, tip),    make_segment(tip, corner),
+                                    make_segment(corner, {0, 1}), make_segment({0, 1}, {0, 0})};
+  Slice slice;
+  slice.epsilon = eps;
+  FreeComponent comp;
+  comp.boundary.emplace_back();
+  for (size_t k = 0; k < cycle.size(); ++k) {
+    ContactSegment seg;
+    seg.id = static_cast<int>(k);
+    seg.moving_feature = static_cast<int>(k);
+    seg.curve = cycle[k];
+    slice.contact_segments.push_back(seg);
+    comp.boundary.back().push_back({seg.id, cycle[k]});
   }
-  EXPECT_EQ(cases, 2);
+  slice.free_components.push_back(comp);
+  std::vector<MeshVertex> vertices;
+  mesh_detail::VertexStore store(vertices);
+  const mesh_detail::SampledSlice sampled =
+      mesh_detail::sample_slice(slice, 0.0, mesh_detail::SamplingOptions{1e-3, 1.0}, store);
+  ASSERT_EQ(sampled.cycles.size(), 1u);
+  ASSERT_EQ(sampled.cycles[0].size(), 1u);
+  EXPECT_EQ(sampled.cycles[0][0].size(), 4u);  // the spike's two pieces left out
+  for (int p : sampled.cycles[0][0]) EXPECT_GT(sampled.pieces[p].length(), 0.5);
 }
 
 // Next to a critical slice a short contact arc (3.5e-4 long) moves 0.1 between the slices,
@@ -355,11 +365,7 @@ TEST(Mesh, RoundOffSpikesOfCriticalSlicesAreLeftOut) {
 // piece's carrier almost together, the wrong way round: the walk then jumped back between
 // them (three straight joins, an edge used four times). Darts that meet are walked in turn.
 TEST(Mesh, DartsThatMeetAreWalkedInTurn) {
-  const Case* c = stress_case(kDartOrderSeed);
-  ASSERT_NE(c, nullptr);
-  const EdgeCensus e = census(c->mesh);
-  EXPECT_EQ(e.bad(), 0);
-  EXPECT_EQ(c->mesh.stats.straight_joins, 0);
+  expect_closed_without_guess(stress_case(kDartOrderSeed));
 }
 
 // Stress seed 133605: two small free components merge where contact curves (6, 21) and
@@ -373,30 +379,28 @@ TEST(Mesh, DartsThatMeetAreWalkedInTurn) {
 // and the paired jumps are lens joins: the mesh closes with no guess.
 TEST(Mesh, ComponentsMeetingJustBeyondTheCriticalSliceJoinAcrossTheLens) {
   const Case* c = stress_case(kLensSeed);
-  ASSERT_NE(c, nullptr);
-  EXPECT_EQ(census(c->mesh).bad(), 0);
-  EXPECT_EQ(c->mesh.stats.straight_joins, 0);
-  EXPECT_EQ(c->mesh.stats.coned_cycles, 0);
+  expect_closed_without_guess(c);
   EXPECT_EQ(c->mesh.stats.lens_joins, 2);  // along each curve of the lens once
 }
 
 // Designed pair 13: a 2 x 1 rectangle about a polyomino turned by an arbitrary angle. Where
 // their edges turn parallel, every vertex-on-edge contact of a cycle gives way to the
-// edge-on-vertex contact along the same line; round-off spreads the group of criticalities
-// over 1e-8 rad, and the critical slice, at its middle, shows only one side's labels. The
-// regular cycle on the other side shared no label with it and was closed by a cone. The
-// contact segments just beside the group now lend their labels to the pieces they run along.
-// A sliver vanishing at such an orientation, bounded by contact segments missing
-// from the critical slice, now closes onto the point where they meet beside it (pair 102).
-TEST(Mesh, LabelsSwappedWithinTheCriticalGroupStillMatch) {
-  for (unsigned seed : {kSwappedLabelsSeed, kSwappedVanishingSeed}) {
-    const Case* c = designed_case(seed);
-    ASSERT_NE(c, nullptr);
-    EXPECT_EQ(census(c->mesh).bad(), 0) << c->name;
-    EXPECT_EQ(c->mesh.stats.coned_cycles, 0) << c->name;
-    EXPECT_EQ(c->mesh.stats.straight_joins, 0) << c->name;
-  }
-  EXPECT_GT(designed_case(kSwappedVanishingSeed)->mesh.stats.collapsed_to_point, 0);
+// edge-on-vertex contact along the same line. A grazing root among the group's criticalities
+// (exact to about 1e-8 rad) put the group's middle 7.5e-9 rad off the others: the critical
+// slice there showed one side's labels only, and the regular cycle on the other side, sharing
+// none with it, was closed by a cone. The slice is now taken at the group's median member
+// (src/criticals/critical.cpp), where both families are within the angular epsilon.
+TEST(Mesh, LabelsSwappedAtACriticalOrientationStillMatch) {
+  expect_closed_without_guess(designed_case(kSwappedLabelsSeed));
+}
+
+// Designed pair 93: a pin (a disc 1 across, off its reference point) in channels of unit
+// cells. At a channel's corner the pin's centre has a little room, and two such free
+// components touch at a point at every orientation. Sharing that corner's vertex, their
+// strips put four triangles on each edge along the line it sweeps; a regular slice now welds
+// only consecutive corners of a cycle.
+TEST(Mesh, ComponentsTouchingThroughAnIntervalKeepCornersOfTheirOwn) {
+  expect_closed_without_guess(designed_case(kTouchingSeed));
 }
 
 // Designed pair 81: a stadium (2 x 1 with round ends) in a 2 x 2 square opening fits its
@@ -405,11 +409,8 @@ TEST(Mesh, LabelsSwappedWithinTheCriticalGroupStillMatch) {
 // triangles on each of its edges. Each side now has its own copy.
 TEST(Mesh, FreeSpacePinchedToACurveClosesEachSideOnItsOwn) {
   const Case* c = designed_case(kPinchedToCurveSeed);
-  ASSERT_NE(c, nullptr);
-  const EdgeCensus e = census(c->mesh);
-  EXPECT_EQ(e.bad(), 0);
+  expect_closed_without_guess(c);
   EXPECT_EQ(c->mesh.stats.collapsed_to_curve, 8);  // four quarter turns, from both sides
-  EXPECT_EQ(c->mesh.stats.coned_cycles, 0);
 }
 
 // The fastener's free components merge and split through its slot, which opens along a
@@ -477,7 +478,8 @@ TEST(Mesh, ThetaMinusPiAndPiMeet) {
     for (const auto& t : m.triangles) {
       const double a = m.vertices[t[0]].theta, b = m.vertices[t[1]].theta,
                    d = m.vertices[t[2]].theta;
-      EXPECT_LE(std::max({a, b, d}) - std::min({a, b, d}), widest) << c->name;
+      // (Up to round-off: the gap and the span are differences of the same angles.)
+      EXPECT_LE(std::max({a, b, d}) - std::min({a, b, d}), widest * (1.0 + 1e-12)) << c->name;
     }
     // Nothing lies beyond the seam, and every vertex on it has its partner, but where free
     // space is pinched to a curve at the seam: each side closes on its own copy of the curve

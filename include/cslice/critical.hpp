@@ -40,7 +40,7 @@ struct Criticality {
 // Criticalities closer together than the critical angle (Tolerances::critical_angle), taken
 // as one orientation.
 struct CriticalOrientation {
-  double theta = 0.0;  // the middle of the group
+  double theta = 0.0;  // the group's median member's (docs/criticals.md, Grouping)
   std::vector<Criticality> criticalities;
 };
 

@@ -188,14 +188,7 @@ class MeshBuilder {
     o.weld_across_cycles = space_.slices[s].kind == SliceKind::critical;
     SampledSlice out = sample_slice(space_.slices[s].slice, theta, o, store_);
     out.transition = transition_at(s);
-    if (out.transition) {
-      const auto& orientations = space_.criticals.orientations;
-      const int k = out.transition->critical;
-      find_coinciding_labels(out, pair_,
-                             k >= 0 && k < static_cast<int>(orientations.size())
-                                 ? &orientations[static_cast<size_t>(k)]
-                                 : nullptr);
-    }
+    if (out.transition) find_coinciding_labels(out);
     const auto& topo = space_.topology;
     const size_t comps = out.cycles.size();
     out.cells =

@@ -65,14 +65,8 @@ struct SampledSlice {
   std::vector<int> components;  // per free component: its 3D component (-1 if unknown)
   std::vector<DegeneratePoint> points;
   // Per piece of a critical slice: the labels of the other contact segments that run along
-  // all of it, or along it just outside the critical group (find_coinciding_labels); empty
-  // elsewhere.
+  // all of it (find_coinciding_labels); empty elsewhere.
   std::vector<std::vector<SegmentLabel>> coinciding;
-  // A critical slice's contact segments just outside its group of criticalities, on both
-  // sides, of labels it lacks, and how far (at most) they lie from where they would be at
-  // the slice's theta.
-  std::vector<ContactSegment> beside;
-  double beside_tolerance = 0.0;
   bool critical() const { return transition != nullptr; }
 };
 
@@ -93,10 +87,8 @@ SampledSlice sample_slice(const Slice& slice, double theta, const SamplingOption
 
 // At a critical slice two contact segments may coincide along a piece, which bears only the
 // lowest one's label (ContactPiece) while a regular slice on either side bears the other:
-// fills SampledSlice::coinciding. With the pair, also the labels of contact segments that
-// run along a piece just outside the critical orientation's group of criticalities
-// `critical` (see the definition).
-void find_coinciding_labels(SampledSlice& s, const Pair* pair, const CriticalOrientation* critical);
+// fills SampledSlice::coinciding.
+void find_coinciding_labels(SampledSlice& s);
 
 // One band of a strip between two slices: the lower polyline (at the lower slice) and the
 // upper one, both running the same way with free space on their left, tiled into triangles.

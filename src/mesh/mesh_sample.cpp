@@ -3,10 +3,11 @@
 //
 // Where the vertices go. A piece's corners are its ends; corners of the slice closer than its
 // epsilon are one vertex, so cycles that touch at a critical slice (a pinch) share it. In a
-// regular slice only a cycle's own corners are: cycles that touch there touch at every
-// orientation of the interval (two free components meeting at a point, where a pin passes
-// from a channel's corner into a channel of exactly its width), and the strips of both would
-// put four triangles on every edge along that line. Inside
+// regular slice only consecutive pieces' corners are: cycles that touch there (or a cycle
+// that touches itself) touch at every orientation of the interval (two free components
+// meeting at a point, where a pin passes from a channel's corner into a channel of exactly
+// its width), and the strips of both passes would put four triangles on every edge along
+// that line. Inside
 // a piece the vertices sit on a grid fixed to the features, not to the piece: an arc at the
 // multiples of one angle (world angle about the contact circle's centre, which translates
 // with theta), a line that turns with theta (a moving segment's contact) at the multiples of
@@ -55,6 +56,10 @@ class Sampler {
         for (const ContactPiece& p : cycle) {
           ids.push_back(static_cast<int>(out_.pieces.size()));
           out_.pieces.push_back(sample(p.curve, p.segment));
+          // Only the cycle's first corner and this piece's end can be the next piece's start
+          // (a cycle that touches itself there passes twice, on vertices of its own).
+          if (!options_.weld_across_cycles && corners_.size() > 2)
+            corners_.erase(corners_.begin() + 1, corners_.end() - 1);
         }
         drop_spikes(ids);
         out_.cycles.back().push_back(std::move(ids));
@@ -240,45 +245,7 @@ SampledSlice sample_slice(const Slice& slice, double theta, const SamplingOption
   return Sampler(slice, theta, options, store).run();
 }
 
-namespace {
-
-// Whether two curves run along each other over a stretch: points spread along each, within
-// `tol` of the other, at two places more than 4 tol apart. Curves meeting at a corner or
-// crossing bring such points together at one place only (unless they cross at an angle
-// below about 16 tol over their lengths).
-bool run_along(const Curve& a, const Curve& b, double tol) {
-  constexpr int kProbes = 8;
-  std::vector<Vec2> near;
-  for (int k = 0; k <= kProbes; ++k) {
-    const double t = static_cast<double>(k) / kProbes;
-    for (const auto& [on, other] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
-      const Vec2 p = point_at(*on, t);
-      if (distance_to_curve(*other, p) > tol) continue;
-      for (Vec2 q : near)
-        if (distance(p, q) > 4.0 * tol) return true;
-      near.push_back(p);
-    }
-  }
-  return false;
-}
-
-void add_label(std::vector<SegmentLabel>& labels, SegmentLabel l) {
-  if (std::find(labels.begin(), labels.end(), l) == labels.end()) labels.push_back(l);
-}
-
-}  // namespace
-
-// The critical slice is taken at the middle of its group of criticalities, which round-off
-// spreads over up to the critical angle (grazing roots are exact to about 1e-8 rad only). A
-// contact segment that appears or vanishes at the group (a moving edge turning parallel to a
-// fixed one swaps a vertex-on-edge contact for an edge-on-vertex one along the same line)
-// may then be missing from the slice although it bounds the regular slices beside it: in a
-// part turned by an arbitrary angle, every piece of a cycle changed label this way and no
-// dart could be given to the regular cycle (designed pair 13). So the contact segments just
-// outside the group, on both sides, lend their labels to the pieces they run along, within
-// the distance a contact curve moves meanwhile.
-void find_coinciding_labels(SampledSlice& s, const Pair* pair,
-                            const CriticalOrientation* critical) {
+void find_coinciding_labels(SampledSlice& s) {
   s.coinciding.assign(s.pieces.size(), {});
   for (size_t k = 0; k < s.pieces.size(); ++k) {
     const Piece& piece = s.pieces[k];
@@ -289,33 +256,6 @@ void find_coinciding_labels(SampledSlice& s, const Pair* pair,
       if (std::all_of(std::begin(probes), std::end(probes),
                       [&](Vec2 p) { return distance_to_curve(seg.curve, p) <= s.slice->epsilon; }))
         s.coinciding[k].push_back({seg.moving_feature, seg.fixed_feature});
-    }
-  }
-  if (!pair || !critical || critical->criticalities.empty()) return;
-  double reach = 0.0;  // from the middle to the group's farthest member, then beyond it
-  for (const Criticality& c : critical->criticalities)
-    reach = std::max(reach, std::fabs(wrap_angle(c.theta - critical->theta)));
-  reach += pair->tol.critical_angle;
-  // A contact point moves by at most the pair's size per radian.
-  const double tol = pair->tol.criticality + 2.0 * pair->tol.size * reach;
-  s.beside_tolerance = tol;
-  // Only labels the slice lacks: its own segments answered for the others above.
-  std::vector<SegmentLabel> present;
-  for (const ContactSegment& seg : s.slice->contact_segments)
-    present.push_back({seg.moving_feature, seg.fixed_feature});
-  std::sort(present.begin(), present.end());
-  for (const double side : {critical->theta - reach, critical->theta + reach})
-    for (const ContactSegment& seg : contact_segments(*pair, side))
-      if (!seg.is_point && !std::binary_search(present.begin(), present.end(),
-                                               SegmentLabel{seg.moving_feature, seg.fixed_feature}))
-        s.beside.push_back(seg);
-  for (const ContactSegment& seg : s.beside) {
-    const SegmentLabel label{seg.moving_feature, seg.fixed_feature};
-    const Box box = bounding_box(seg.curve).inflated(tol);
-    for (size_t k = 0; k < s.pieces.size(); ++k) {
-      const Piece& piece = s.pieces[k];
-      if (piece.label == label || !box.overlaps(bounding_box(piece.curve))) continue;
-      if (run_along(piece.curve, seg.curve, tol)) add_label(s.coinciding[k], label);
     }
   }
 }

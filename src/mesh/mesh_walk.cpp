@@ -672,20 +672,7 @@ int Walker::vanishing_point(const Cycle& cycle) {
     if (!seg.is_point && std::binary_search(labels.begin(), labels.end(), l))
       curves[l].push_back(&seg.curve);
   }
-  // A label missing from the slice may belong to a contact segment that vanishes or appears
-  // within the critical group (find_coinciding_labels): its segments just beside the group
-  // stand in, with the distance they may have moved.
-  double reach = kCriticalityPerGeometric * c.slice->epsilon;
-  std::vector<SegmentLabel> at_slice;
-  for (const auto& entry : curves) at_slice.push_back(entry.first);  // sorted, as the map
-  for (const ContactSegment& seg : c.beside) {
-    const SegmentLabel l{seg.moving_feature, seg.fixed_feature};
-    if (!std::binary_search(labels.begin(), labels.end(), l) ||
-        std::binary_search(at_slice.begin(), at_slice.end(), l))
-      continue;
-    curves[l].push_back(&seg.curve);
-    reach = std::max(reach, c.beside_tolerance);
-  }
+  const double eps = c.slice->epsilon, reach = kCriticalityPerGeometric * eps;
   if (curves.size() < 2) return -1;
   const auto score = [&](Vec2 q) {
     double worst = 0.0;
