@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "support/completeness.hpp"
+#include "support/designed_pairs.hpp"
 #include "support/examples.hpp"
 #include "support/random_parts.hpp"
 
@@ -125,4 +126,17 @@ TEST(CriticalCompleteness, DesignedFits) {
                     "[[-0.5,-4],[0.5,-4],[0.5,4],[-0.5,4]]"),
   };
   for (const Pair& pair : pairs) expect_complete(pair, pair.name);
+}
+
+// The stress driver's designed pairs (tests/support/designed_pairs.cpp), six rounds of its six
+// kinds, two of them turned by an arbitrary angle: parts on a unit grid in openings they fit
+// exactly, polygons spinning in discs and in copies of themselves, pins in slots of their
+// width (pair 33 lost its sliding fit to the containment test), combs interlocking.
+TEST(CriticalCompleteness, DesignedPairsOfEveryKind) {
+  testkit::CompletenessReport total;
+  for (unsigned seed = 0; seed < 36; ++seed)
+    expect_complete(testkit::designed_pair(seed).pair, "designed pair " + std::to_string(seed),
+                    &total);
+  std::printf("36 designed pairs: %d orientations, %d extraneous, %d near-critical, %lld slices\n",
+              total.orientations, total.extraneous, total.near_critical, total.slices);
 }
