@@ -74,6 +74,16 @@ TEST(CriticalCompleteness, TenLargerRandomCurvedPairs) {
 // A stress run's pair where one group's criticalities spread over 2.6e-8 rad: a sample just
 // before the group's middle but after its first criticality (a segment appearing) differed
 // from its interval's representative. The interval runs between the groups' spans.
+// Stress seed 141335: three contact curves (a line, a flat arc of radius 12 and an arc of
+// radius 0.5) meet at one point at theta = -1.1845926, where a piece of the line comes onto
+// the free boundary. The triple point taken from the line and the two circles' radical line,
+// which cross at a shallow angle, lay 1e-5 off the small arc, and the triple was rejected:
+// a change with no critical orientation. The crossings of each two curves themselves are
+// candidates for the point now (src/criticals/events.cpp).
+TEST(CriticalCompleteness, TriplePointWhereTheRadicalLineCrossesAtAShallowAngle) {
+  expect_complete(testkit::stress_pair(141335).pair, "stress pair 141335");
+}
+
 TEST(CriticalCompleteness, SamplesInsideAGroupsSpanBelongToItsOrientation) {
   expect_complete(testkit::stress_pair(100223).pair, "stress pair 100223");
 }

@@ -1,6 +1,10 @@
 #include "criticals/events.hpp"
+#include <limits>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
 
 namespace cslice {
 namespace {
@@ -129,13 +133,18 @@ Vec2 tangent_point(const FamilyEquation& a, const FamilyEquation& b, const TrigA
   return miss(candidates[0]) <= miss(candidates[1]) ? candidates[0] : candidates[1];
 }
 
-std::optional<Vec2> triple_point(const FamilyEquation& a, const FamilyEquation& b,
-                                 const FamilyEquation& c, const TrigAngle& theta) {
-  const FamilyEquation* e[3] = {&a, &b, &c};
-  const FamilyEquation* g = nullptr;
-  for (auto* x : e)
-    if (x->circle && !g) g = x;
-  // Solve two of the linear equations; with no circle pick the best-conditioned pair.
+namespace {
+
+// How far x lies from the family's whole curve at theta (a line or a circle).
+double curve_miss(const FamilyEquation& f, Vec2 x, const TrigAngle& theta) {
+  if (f.circle) return std::fabs(distance(x, evaluate(f.point, theta)) - f.radius);
+  return std::fabs(dot(evaluate(f.normal, theta), x - evaluate(f.point, theta)));
+}
+
+// The common point of two of the three curves' linear equations (with circle g subtracted
+// from the others when given), from the best-conditioned pair of rows.
+std::optional<Vec2> solve_rows(const FamilyEquation* const (&e)[3], const FamilyEquation* g,
+                               const TrigAngle& theta) {
   struct Row {
     double ax, ay, b;
   };
@@ -163,6 +172,76 @@ std::optional<Vec2> triple_point(const FamilyEquation& a, const FamilyEquation& 
       best = Vec2{(-r.b * s.ay + s.b * r.ay) / det, (-r.ax * s.b + s.ax * r.b) / det};
     }
   if (best && !is_finite(*best)) return std::nullopt;
+  return best;
+}
+
+// Where two whole curves cross at theta, by their own geometry (a line's foot and chord, or
+// the circles' common chord), added to `out`; where they miss each other, their nearest
+// point (a grazing crossing that round-off pulled apart).
+void add_crossings(const FamilyEquation& f, const FamilyEquation& g, const TrigAngle& theta,
+                   std::vector<Vec2>& out) {
+  if (!f.circle && !g.circle) return;  // two lines: solve_rows already has their point
+  if (f.circle != g.circle) {
+    const FamilyEquation& line = f.circle ? g : f;
+    const FamilyEquation& circle = f.circle ? f : g;
+    const Vec2 c = evaluate(circle.point, theta), n = evaluate(line.normal, theta);
+    const double d = dot(n, c - evaluate(line.point, theta));
+    const Vec2 foot = c - d * n, along{-n.y, n.x};
+    const double h = std::sqrt(std::max(0.0, circle.radius * circle.radius - d * d));
+    out.push_back(foot + h * along);
+    out.push_back(foot - h * along);
+    return;
+  }
+  const Vec2 c1 = evaluate(f.point, theta), c2 = evaluate(g.point, theta);
+  const double d = distance(c1, c2);
+  if (!(d > 0.0)) return;
+  const Vec2 u = (1.0 / d) * (c2 - c1), across{-u.y, u.x};
+  const double a = (f.radius * f.radius - g.radius * g.radius + d * d) / (2.0 * d);
+  const double h = std::sqrt(std::max(0.0, f.radius * f.radius - a * a));
+  out.push_back(c1 + a * u + h * across);
+  out.push_back(c1 + a * u - h * across);
+}
+
+}  // namespace
+
+// A triple point within this much (relative to its distance from the origin) of all three
+// curves is kept as it is: far below the criticality tolerance that validates it.
+constexpr double kWellPlacedTriplePoint = 1e-12;
+
+// The linear equations (a circle subtracted from the others) can cross at a shallow angle
+// where two of the curves themselves cross steeply: a line and the radical line of a flat
+// circle of radius 12 and one of radius 0.5 put the point 2.3e-5 along the line from where
+// the three meet, 1e-5 off the third curve, and the triple was rejected (stress seed 141335,
+// a change the critical orientations missed). So the crossings of each two of the curves
+// themselves are candidates too, and the one nearest all three curves is kept; the linear
+// equations' point comes first, so a tie keeps what it gave before.
+std::optional<Vec2> triple_point(const FamilyEquation& a, const FamilyEquation& b,
+                                 const FamilyEquation& c, const TrigAngle& theta) {
+  const FamilyEquation* const e[3] = {&a, &b, &c};
+  const FamilyEquation* g = nullptr;
+  for (auto* x : e)
+    if (x->circle && !g) g = x;
+  std::optional<Vec2> best = solve_rows(e, g, theta);
+  if (!g) return best;
+  const auto miss = [&](Vec2 x) {
+    double m = 0.0;
+    for (auto* f : e) m = std::max(m, curve_miss(*f, x, theta));
+    return m;
+  };
+  double best_miss = best ? miss(*best) : std::numeric_limits<double>::infinity();
+  // Nearly always the linear point is on all three to round-off: no need to look further.
+  if (best && best_miss <= kWellPlacedTriplePoint * std::max(1.0, length(*best))) return best;
+  std::vector<Vec2> candidates;
+  add_crossings(a, b, theta, candidates);
+  add_crossings(a, c, theta, candidates);
+  add_crossings(b, c, theta, candidates);
+  for (Vec2 x : candidates) {
+    if (!is_finite(x)) continue;
+    if (const double m = miss(x); m < best_miss) {
+      best_miss = m;
+      best = x;
+    }
+  }
   return best;
 }
 
