@@ -24,6 +24,11 @@ inline constexpr double kDefaultRelativeTolerance = 1e-3;
 // amplifies that again; a thousand geometric epsilons still sits far below any designed
 // length.
 inline constexpr double kCriticalityPerGeometric = 1e3;
+// A triple point (three contact curves through one point) computed from two linear equations
+// that lies within this much of all three curves, relative to its distance from the origin
+// (at least 1), is kept without looking further: round-off of a well-conditioned solution,
+// far below the criticality tolerance that validates it (src/criticals/events.cpp).
+inline constexpr double kWellPlacedTriplePoint = 1e-12;
 
 // The flattest arc a part may have: its radius at most this many times the pair's size
 // (dimensionless); flatter arcs are refused with a message to make them straight. Contact

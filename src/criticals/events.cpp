@@ -1,5 +1,4 @@
 #include "criticals/events.hpp"
-#include <limits>
 
 #include <algorithm>
 #include <cmath>
@@ -177,7 +176,9 @@ std::optional<Vec2> solve_rows(const FamilyEquation* const (&e)[3], const Family
 
 // Where two whole curves cross at theta, by their own geometry (a line's foot and chord, or
 // the circles' common chord), added to `out`; where they miss each other, their nearest
-// point (a grazing crossing that round-off pulled apart).
+// point (a grazing crossing that round-off pulled apart). whole_curves_cross
+// (candidates.cpp) has the same geometry but no answer for grazing curves, which bound no
+// meeting there; a triple point needs that nearest point too.
 void add_crossings(const FamilyEquation& f, const FamilyEquation& g, const TrigAngle& theta,
                    std::vector<Vec2>& out) {
   if (!f.circle && !g.circle) return;  // two lines: solve_rows already has their point
@@ -203,10 +204,6 @@ void add_crossings(const FamilyEquation& f, const FamilyEquation& g, const TrigA
 }
 
 }  // namespace
-
-// A triple point within this much (relative to its distance from the origin) of all three
-// curves is kept as it is: far below the criticality tolerance that validates it.
-constexpr double kWellPlacedTriplePoint = 1e-12;
 
 // The linear equations (a circle subtracted from the others) can cross at a shallow angle
 // where two of the curves themselves cross steeply: a line and the radical line of a flat

@@ -672,8 +672,8 @@ int Walker::vanishing_point(const Cycle& cycle) {
     if (!seg.is_point && std::binary_search(labels.begin(), labels.end(), l))
       curves[l].push_back(&seg.curve);
   }
-  const double eps = c.slice->epsilon, reach = kCriticalityPerGeometric * eps;
   if (curves.size() < 2) return -1;
+  const double eps = c.slice->epsilon, reach = kCriticalityPerGeometric * eps;
   const auto score = [&](Vec2 q) {
     double worst = 0.0;
     for (const auto& [l, list] : curves) {

@@ -128,8 +128,8 @@ LoopVertices regular_polygon(int n, double circumradius, double phase, Vec2 cent
 
 // An a x b rectangle about the origin with quarter-circle corners of radius r (sharp for 0).
 LoopVertices rounded_rectangle(double a, double b, double r) {
-  const double x = 0.5 * a, y = 0.5 * b, q = r > 0.0 ? std::tan(kPi / 8.0) : 0.0;
-  if (r == 0.0) return {{-x, -y}, {x, -y}, {x, y}, {-x, y}};
+  if (r == 0.0) return rectangle(a, b);
+  const double x = 0.5 * a, y = 0.5 * b, q = std::tan(kPi / 8.0);
   return {{-x + r, -y}, {x - r, -y, q}, {x, -y + r}, {x, y - r, q},
           {x - r, y},   {-x + r, y, q}, {-x, y - r}, {-x, -y + r, q}};
 }
