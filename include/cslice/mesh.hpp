@@ -55,6 +55,9 @@ struct MeshStats {
   // Cycles of a critical slice with nothing on one side (a sliver that vanishes at the
   // critical orientation itself, up to round-off), closed flat in the critical slice.
   int capped_cycles = 0;
+  // Pairs of triangles with the same corners in opposite orders, removed: a sheet of zero
+  // thickness where a part fits an opening exactly at one orientation only (a fin).
+  int cancelled_sheets = 0;
   // Cycles tiled through a branching: a cycle of the regular slice walking the pieces of
   // several cycles of the critical one (the merged cycle), or the reverse (the split one).
   int branched_cycles = 0;

@@ -41,6 +41,7 @@ void add(MeshStats& a, const MeshStats& b) {
   a.collapsed_to_curve += b.collapsed_to_curve;
   a.branched_cycles += b.branched_cycles;
   a.capped_cycles += b.capped_cycles;
+  a.cancelled_sheets += b.cancelled_sheets;
   a.degenerate_joins += b.degenerate_joins;
   a.straight_joins += b.straight_joins;
   a.lens_joins += b.lens_joins;
@@ -310,6 +311,7 @@ class MeshBuilder {
     StripResult r = stitch_strip(a, b, links(a, b), store_);
     StripMesh out{std::move(r.triangles), r.stats};
     for (const Band& band : r.bands) tile_band(band, store_, out.triangles);
+    out.stats.cancelled_sheets = cancel_opposite_triangles(out.triangles);
     if (!pair_) return out;
     // The true slice halfway: kept, as a refined slice may be made of it.
     refined_.push_back(slicer_->slice(wrap_angle(0.5 * (a.theta + b.theta))));

@@ -143,6 +143,9 @@ void add_cone(const SampledSlice& s, const Cycle& c, double other_theta, bool lo
 // Tiles a band into triangles, normals pointing out of free space; triangles with a repeated
 // vertex (a polyline that has shrunk to a point there) are left out.
 void tile_band(const Band& band, const VertexStore& store, std::vector<Triangle>& out);
+// Removes each pair of triangles with the same corners in opposite orders (a sheet of zero
+// thickness, traversed once each way) from triangles [first, end); returns the pairs removed.
+int cancel_opposite_triangles(std::vector<Triangle>& triangles, size_t first = 0);
 
 // ---- Plane cuts (mesh_cut.cpp) ---------------------------------------------------------
 

@@ -3,6 +3,8 @@
 // material coordinate when both sides carry one (vertices of the same feature point are then
 // joined, docs/mesh.md), otherwise by arc-length fraction, so two sides sampled differently
 // (a piece shrinking towards a critical slice) still tile.
+#include <map>
+
 #include "mesh/mesh_internal.hpp"
 
 namespace cslice::mesh_detail {
@@ -44,6 +46,41 @@ void tile_band(const Band& band, const VertexStore& store, std::vector<Triangle>
       ++b;
     }
   }
+}
+
+// A fin: where a part fits an opening exactly at one orientation only, the free space there
+// is the fit's curve, and the small free region beside it on either side closes onto it from
+// one corner. The bands along the fit's two darts then tile the same triangles from that corner,
+// once each way: a sheet of zero thickness whose edges the rest of the strip uses too (edges
+// used four times). The two copies bound nothing, so both go; the fit stays a curve of the
+// slices, not of the surface.
+int cancel_opposite_triangles(std::vector<Triangle>& triangles, size_t first) {
+  // Each triangle by its rotation starting at its least corner; its reverse keeps that corner
+  // first and swaps the other two.
+  const auto canonical = [](const Triangle& t) {
+    const int k = t[0] < t[1] ? (t[0] < t[2] ? 0 : 2) : (t[1] < t[2] ? 1 : 2);
+    return Triangle{t[k], t[(k + 1) % 3], t[(k + 2) % 3]};
+  };
+  std::map<Triangle, size_t> open;  // canonical corners -> index of a triangle not yet paired
+  std::vector<char> gone(triangles.size(), 0);
+  int pairs = 0;
+  for (size_t i = first; i < triangles.size(); ++i) {
+    const Triangle t = canonical(triangles[i]);
+    const auto reverse = open.find(Triangle{t[0], t[2], t[1]});
+    if (reverse != open.end()) {
+      gone[i] = gone[reverse->second] = 1;
+      open.erase(reverse);
+      ++pairs;
+    } else {
+      open.emplace(t, i);
+    }
+  }
+  if (pairs == 0) return 0;
+  size_t kept = first;
+  for (size_t i = first; i < triangles.size(); ++i)
+    if (!gone[i]) triangles[kept++] = triangles[i];
+  triangles.resize(kept);
+  return pairs;
 }
 
 }  // namespace cslice::mesh_detail

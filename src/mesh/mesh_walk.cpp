@@ -242,6 +242,9 @@ class Walker {
                                    const std::vector<const Cycle*>& c_cycles) const;
   void drop_open_branches(const std::vector<const Cycle*>& c_cycles,
                           std::map<int, Claim>& owner) const;
+  void drop_cycles_beyond_their_pieces(const std::vector<const Cycle*>& r_cycles,
+                                       const std::vector<const Cycle*>& c_cycles,
+                                       std::map<int, Claim>& owner) const;
   int degenerate_dart(int from, int to, bool unused_only) const;
   // Walks the cycles of R linked to the cycles of C through one event. In the first pass
   // (`left` given) what finds no partner is left over; in the second it is closed.
@@ -339,11 +342,42 @@ void Walker::drop_open_branches(const std::vector<const Cycle*>& c_cycles,
   }
 }
 
+// A sliver of free space that vanishes at C itself, up to round-off, can touch a component
+// that goes on (stress seed 148668: two contact curves nearly tangent at C, the sliver between
+// them and a third curve, 6e-8 wide, gone 1e-7 rad beyond C). The topology rightly links both
+// to R's component, whose pieces of the sliver's labels end where the curves cross in R, far
+// from the sliver: every dart of it lies beyond the end of the piece that claims it. Walked,
+// its cycle would be fanned to that one regular vertex, a cone whose two edges to it run
+// alongside the walk's own (edges used four times). Such a cycle, one of several in the
+// group, is released to be capped in C.
+void Walker::drop_cycles_beyond_their_pieces(const std::vector<const Cycle*>& r_cycles,
+                                             const std::vector<const Cycle*>& c_cycles,
+                                             std::map<int, Claim>& owner) const {
+  if (c_cycles.size() < 2) return;
+  const auto beyond = [&](int d) {
+    const Claim& claim = owner.at(d);
+    const Piece& rp = r_.pieces[(*r_cycles[claim.cycle])[claim.at]];
+    const double along = along_carrier(rp.curve, point_at(c_.pieces[d].curve, 0.5));
+    return along < 0.0 || along > rp.length();
+  };
+  std::vector<const Cycle*> released;
+  for (const Cycle* y : c_cycles) {
+    bool any = false, all_beyond = true;
+    for (int d : *y)
+      if (owner.count(d)) any = true, all_beyond = all_beyond && beyond(d);
+    if (any && all_beyond) released.push_back(y);
+  }
+  if (released.empty() || released.size() == c_cycles.size()) return;
+  for (const Cycle* y : released)
+    for (int d : *y) owner.erase(d);
+}
+
 void Walker::walk_group(const std::vector<const Cycle*>& r_cycles,
                         const std::vector<const Cycle*>& c_cycles, Leftovers* left) {
   const SampledSlice &r = r_, &c = c_;
   std::map<int, Claim> owner = claim_darts(r_cycles, c_cycles);
   drop_open_branches(c_cycles, owner);
+  drop_cycles_beyond_their_pieces(r_cycles, c_cycles, owner);
   // A dart with no such piece (it appears or vanishes exactly at the critical slice) is loose:
   // it follows the owned dart before it in its cycle. A cycle of C with no owned dart at all
   // has no partner on R's side: left over for the second pass, then capped.
