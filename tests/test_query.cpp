@@ -15,6 +15,7 @@
 #include "cslice/space.hpp"
 #include "support/band.hpp"
 #include "support/cli_run.hpp"
+#include "support/designed_pairs.hpp"
 #include "support/examples.hpp"
 #include "support/random_parts.hpp"
 #include "support/spaces.hpp"
@@ -136,6 +137,30 @@ TEST(SpaceQuery, ContactAtTheTipOfAThinPocketIsWithinTheBand) {
   EXPECT_EQ(tester.classify(pose), Placement::blocked);
   EXPECT_TRUE(deep_blocked(tester, pose, 2.0 * rp.pair.tol.contact));
   EXPECT_TRUE(near_realizable(rp.pair, pose, rp.pair.tol.contact));
+}
+
+// Designed pair 1068 fits exactly at theta = pi only. A configuration 9.2e-7 rad from it
+// (within the critical angle) is answered from the critical slice: contact. Classify finds an
+// overlap of 1e-6 that no translation undoes and no piece of the slice at its own theta is
+// near; turned by 9.2e-7 rad it touches, a distance far inside the contact tolerance. The
+// oracle now accepts contact from the critical slice there.
+TEST(SpaceQuery, ContactWithinTheCriticalAngleOfAnExactFitIsWithinTheBand) {
+  const Pair pair = testkit::designed_pair(1068).pair;
+  const SlicedSpace space = space_of(pair);
+  SpaceQuery q(pair, space);
+  PlacementTester tester(pair);
+  const Pose pose{0.99634524115430234, 2.1363582928913596, -3.1415935742800474};
+  const double band = 2.0 * pair.tol.contact;
+  EXPECT_EQ(q.query(pose).placement, Placement::contact);
+  EXPECT_EQ(tester.classify(pose), Placement::blocked);
+  EXPECT_TRUE(deep_blocked(tester, pose, band));
+  EXPECT_FALSE(near_realizable(pair, pose, 0.75 * band));
+  EXPECT_TRUE(testkit::near_realizable_at_critical(pair, space, pose, 0.75 * band));
+  // The stress run's 600 queries (no free space here but the fit: all of them blocked).
+  SpaceQuery fresh(pair, space);
+  EXPECT_EQ(testkit::compare_queries_with_classify(pair, space, fresh, 600, 1068, "designed-1068")
+                .mismatches,
+            0);
 }
 
 class QueryCli : public testkit::ScratchDirTest {

@@ -311,7 +311,11 @@ class MeshBuilder {
     StripResult r = stitch_strip(a, b, links(a, b), store_);
     StripMesh out{std::move(r.triangles), r.stats};
     for (const Band& band : r.bands) tile_band(band, store_, out.triangles);
-    out.stats.cancelled_sheets = cancel_opposite_triangles(out.triangles);
+    // Sheets come from a fit's two darts, which only a critical slice has.
+    for (const SampledSlice* s : {&a, &b})
+      if (s->critical() && s->pieces.size() > static_cast<size_t>(s->boundary_pieces))
+        out.stats.cancelled_sheets += cancel_opposite_triangles(
+            out.triangles, triangles_on_two_way_edges(out.triangles, store_, s->theta));
     if (!pair_) return out;
     // The true slice halfway: kept, as a refined slice may be made of it.
     refined_.push_back(slicer_->slice(wrap_angle(0.5 * (a.theta + b.theta))));

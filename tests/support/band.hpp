@@ -20,6 +20,10 @@ bool deep_blocked(PlacementTester& tester, const Pose& pose, double d);
 // (stress seeds 100050, 100158, 100206: blocked in all eight directions, yet 0.0078 from the
 // tip of a thin pocket, with a contact tolerance of 0.0086).
 bool near_realizable(const Pair& pair, const Pose& pose, double d);
+// Whether a critical orientation lies within the critical angle of the pose's theta with a
+// realizable piece within d of (x, y) in its slice, where the query answers from.
+bool near_realizable_at_critical(const Pair& pair, const SlicedSpace& space, const Pose& pose,
+                                 double d);
 
 // Where query configurations are drawn: every contact curve of the stored slices, with a
 // margin.

@@ -29,7 +29,9 @@ int expect_crossings_joined(const Pair& pair, const SlicedSpace& space, int at, 
 // critical slice `at` across (as above, expecting each joined where it lands), and expects the
 // cells of every event of the topology's transition there to be joined by those carries.
 // Returns how many cells of the events no carry joins to the rest (each a failure: a join the
-// sample rules made that nothing carried confirms, or a component too thin to carry).
+// sample rules made that nothing carried confirms, or a component too thin to carry through).
+// A cell whose component next to the critical slice is thinner than that slice's epsilon band
+// (its sample does not locate) cannot start a carry and is left out of the check.
 int expect_joins_witnessed(const Pair& pair, const SlicedSpace& space, int at,
                            const std::string& what);
 
