@@ -163,6 +163,29 @@ TEST(SpaceQuery, ContactWithinTheCriticalAngleOfAnExactFitIsWithinTheBand) {
             0);
 }
 
+// Designed pair 6008: a regular octagon turning in the circle through its corners fits it at
+// every orientation, and nowhere else: no free space, no critical orientation, a perfect fit
+// (a degenerate point) in every slice. A configuration 0.0043 from it, within the contact
+// tolerance 0.0057, is blocked by classify whichever way it moves; the query's contact is
+// right, and the oracle counts perfect fits as contact now.
+TEST(SpaceQuery, ContactNearAPerfectFitIsWithinTheBand) {
+  const Pair pair = testkit::designed_pair(6008).pair;
+  const SlicedSpace space = space_of(pair);
+  EXPECT_TRUE(space.criticals.orientations.empty());
+  SpaceQuery q(pair, space);
+  PlacementTester tester(pair);
+  const Pose pose{0.60390912798529151, -0.79625933250252223, -0.92625322032939472};
+  const double band = 2.0 * pair.tol.contact;
+  EXPECT_EQ(q.query(pose).placement, Placement::contact);
+  EXPECT_EQ(tester.classify(pose), Placement::blocked);
+  EXPECT_TRUE(deep_blocked(tester, pose, band));
+  EXPECT_TRUE(near_realizable(pair, pose, 0.75 * band));
+  SpaceQuery fresh(pair, space);
+  EXPECT_EQ(testkit::compare_queries_with_classify(pair, space, fresh, 600, 6008, "designed-6008")
+                .mismatches,
+            0);
+}
+
 class QueryCli : public testkit::ScratchDirTest {
  protected:
   QueryCli() : testkit::ScratchDirTest("cslice_query") {}

@@ -16,11 +16,17 @@ bool deep_blocked(PlacementTester& tester, const Pose& pose, double d) {
   return true;
 }
 
+// Perfect fits count: a polygon turning in the circle through its corners (designed pair
+// 6008) has no other contact space, only a degenerate point at every theta.
 bool near_realizable(const Pair& pair, const Pose& pose, double d) {
   const Slice slice = compute_slice(pair, pose.theta);
-  return std::any_of(slice.realizable.begin(), slice.realizable.end(), [&](const ContactPiece& p) {
-    return distance_to_curve(p.curve, {pose.x, pose.y}) <= d;
-  });
+  const Vec2 p{pose.x, pose.y};
+  return std::any_of(
+             slice.realizable.begin(), slice.realizable.end(),
+             [&](const ContactPiece& piece) { return distance_to_curve(piece.curve, p) <= d; }) ||
+         std::any_of(
+             slice.degenerate.begin(), slice.degenerate.end(),
+             [&](const DegenerateContact& c) { return distance_to_curve(c.curve, p) <= d; });
 }
 
 // A query within the critical angle of a critical orientation is answered from that slice

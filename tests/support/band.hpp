@@ -15,7 +15,8 @@ namespace cslice::testkit {
 // Blocked, and still blocked moved by d in each of eight directions.
 bool deep_blocked(PlacementTester& tester, const Pose& pose, double d);
 
-// Whether a realizable piece of the slice at the pose's theta passes within d of it: the
+// Whether a realizable piece or a perfect fit of the slice at the pose's theta passes within
+// d of it: the
 // eight probes of deep_blocked miss the tip of a free wedge narrower than their spacing
 // (stress seeds 100050, 100158, 100206: blocked in all eight directions, yet 0.0078 from the
 // tip of a thin pocket, with a contact tolerance of 0.0086).
