@@ -358,7 +358,7 @@ void Walker::drop_cycles_beyond_their_pieces(const std::vector<const Cycle*>& r_
     const Claim& claim = owner.at(d);
     const Piece& rp = r_.pieces[(*r_cycles[claim.cycle])[claim.at]];
     const double along = along_carrier(rp.curve, point_at(c_.pieces[d].curve, 0.5));
-    return along < 0.0 || along > rp.length();
+    return along < 0.0 || along > curve_length(rp.curve);
   };
   std::vector<const Cycle*> released;
   for (const Cycle* y : c_cycles) {

@@ -25,7 +25,8 @@ struct CompletenessOptions {
   // towards its critical orientation. Each change found is re-checked with the epsilon
   // divided by this factor (and, failing that, by its square), and counted as near-critical
   // when it left its bracket and reappeared at least halfway closer to a reported critical
-  // orientation.
+  // orientation. A change of the realizable labels is followed as such: other changes of the
+  // finer slices (a sliver's tip resolved as a perfect fit on and off) do not stop the search.
   double epsilon_shrink = 100.0;
 };
 
