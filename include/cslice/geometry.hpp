@@ -321,6 +321,10 @@ struct Intersection {
 Intersection intersect_segment_segment(const Curve& a, const Curve& b, double eps);
 Intersection intersect_segment_arc(const Curve& segment, const Curve& arc, double eps);
 Intersection intersect_arc_arc(const Curve& a, const Curve& b, double eps);
+// The two crossing points of circles (c1, r1) and (c2, r2) at centre distance d > 0, computed
+// from the smaller circle with the differences factored (well conditioned for a far, flat
+// circle's centre); circles that miss each other, or nearly, give their nearest point twice.
+std::array<Vec2, 2> circle_crossings(Vec2 c1, double r1, Vec2 c2, double r2, double d);
 Intersection intersect(const Curve& a, const Curve& b, double eps);
 
 // ---- Distances -------------------------------------------------------------------------

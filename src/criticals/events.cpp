@@ -196,11 +196,7 @@ void add_crossings(const FamilyEquation& f, const FamilyEquation& g, const TrigA
   const Vec2 c1 = evaluate(f.point, theta), c2 = evaluate(g.point, theta);
   const double d = distance(c1, c2);
   if (!(d > 0.0)) return;
-  const Vec2 u = (1.0 / d) * (c2 - c1), across{-u.y, u.x};
-  const double a = (f.radius * f.radius - g.radius * g.radius + d * d) / (2.0 * d);
-  const double h = std::sqrt(std::max(0.0, f.radius * f.radius - a * a));
-  out.push_back(c1 + a * u + h * across);
-  out.push_back(c1 + a * u - h * across);
+  for (Vec2 p : circle_crossings(c1, f.radius, c2, g.radius, d)) out.push_back(p);
 }
 
 }  // namespace

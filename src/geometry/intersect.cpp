@@ -277,7 +277,6 @@ Intersection intersect_segment_arc(const Curve& s, const Curve& arc, double eps)
 // end of two contact arcs came back as two points (stress seed 101242 lost its free space so).
 // From the smaller circle the error is that of d alone, about 1e-16 of the far centre's
 // distance.
-namespace {
 std::array<Vec2, 2> circle_crossings(Vec2 c1, double r1, Vec2 c2, double r2, double d) {
   if (r1 > r2) {
     std::swap(c1, c2);
@@ -288,7 +287,6 @@ std::array<Vec2, 2> circle_crossings(Vec2 c1, double r1, Vec2 c2, double r2, dou
   const double h = std::sqrt(std::max(0.0, (r1 - s) * (r1 + s)));
   return {c1 + s * u + h * perp_left(u), c1 + s * u - h * perp_left(u)};
 }
-}  // namespace
 
 // Arcs on circles (c1, r1) and (c2, r2) at centre distance d. Concentric within eps: equal
 // radii overlap (pieces or touching ends), others never meet. Otherwise d within eps of

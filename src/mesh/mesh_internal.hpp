@@ -144,9 +144,8 @@ void add_cone(const SampledSlice& s, const Cycle& c, double other_theta, bool lo
 // vertex (a polyline that has shrunk to a point there) are left out.
 void tile_band(const Band& band, const VertexStore& store, std::vector<Triangle>& out);
 // Removes each pair of triangles with the same corners in opposite orders (a sheet of zero
-// thickness, traversed once each way) from triangles [first, end), or from the candidates
-// (indices, ascending); returns the pairs removed.
-int cancel_opposite_triangles(std::vector<Triangle>& triangles, size_t first = 0);
+// thickness, traversed once each way) from among the candidates (indices, ascending); returns
+// the pairs removed.
 int cancel_opposite_triangles(std::vector<Triangle>& triangles,
                               const std::vector<size_t>& candidates);
 // The triangles with an edge in the slice at theta that some triangle runs the other way:

@@ -99,12 +99,6 @@ int cancel_opposite_triangles(std::vector<Triangle>& triangles,
   return static_cast<int>(gone.size() / 2);
 }
 
-int cancel_opposite_triangles(std::vector<Triangle>& triangles, size_t first) {
-  std::vector<size_t> all(triangles.size() - first);
-  for (size_t i = 0; i < all.size(); ++i) all[i] = first + i;
-  return cancel_opposite_triangles(triangles, all);
-}
-
 // A sheet's triangles each have an edge in the critical slice that the strip also runs the
 // other way (a fit's two darts); any other edge of that slice bounds the strip, used once.
 std::vector<size_t> triangles_on_two_way_edges(const std::vector<Triangle>& triangles,
