@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <random>
 
@@ -11,6 +12,7 @@
 #include "cslice/critical.hpp"
 #include "support/cli_run.hpp"
 #include "support/examples.hpp"
+#include "support/moved_examples.hpp"
 #include "support/random_parts.hpp"
 #include "support/random_polygons.hpp"
 
@@ -159,6 +161,31 @@ TEST(Trig, DoubleRootsAreFoundAndPolished) {
   EXPECT_NEAR(r.roots[1], 0.7, kRootAccuracy);
 }
 
+// A double root computed with round-off either way: the equation's extremum just short of
+// zero (no root in exact terms), on it, or just across (two roots a few 1e-8 rad apart). The
+// rounding must not decide between one root and two: designed parts put such roots exactly at
+// the orientation where a contact segment starts, and only the extremum itself is there.
+TEST(Trig, ADoubleRootIsOneRootWhicheverWayRoundOffFalls) {
+  const double ulp = std::numeric_limits<double>::epsilon();
+  for (double depth : {-4 * ulp, -ulp, 0.0, ulp, 4 * ulp}) {
+    // First harmonic, closed form: cos(theta - 0.3) = 1 + depth.
+    const Trig c = Trig::harmonic(std::cos(0.3), std::sin(0.3)) - Trig::constant(1.0 + depth);
+    const TrigRoots r1 = trig_roots(c, 1e-14, 1e-9, 1e-9);
+    ASSERT_EQ(r1.roots.size(), 1u) << depth;
+    EXPECT_NEAR(r1.roots[0], 0.3, kRootAccuracy) << depth;
+    // Second harmonic, searched in tan(theta / 2): cos(2 theta - 0.5) = 1 + depth, at 0.25
+    // and 0.25 - pi.
+    Trig c2 = Trig::constant(-(1.0 + depth));
+    c2.top = 2;
+    c2.a[2] = std::cos(0.5);
+    c2.b[2] = std::sin(0.5);
+    const TrigRoots r2 = trig_roots(c2, 1e-14, 1e-9, 1e-9);
+    ASSERT_EQ(r2.roots.size(), 2u) << depth;
+    EXPECT_NEAR(r2.roots[0], 0.25 - kPi, kRootAccuracy) << depth;
+    EXPECT_NEAR(r2.roots[1], 0.25, kRootAccuracy) << depth;
+  }
+}
+
 TEST(Trig, RootsAtTheChartBordersAndAtMinusPiAreReportedOnce) {
   // sin(theta) vanishes at -pi and 0; cos(theta) at +-pi/2, where the two charts meet.
   const TrigRoots s = trig_roots(Trig::harmonic(0.0, 1.0), 1e-14, 1e-12, 1e-12);
@@ -261,6 +288,39 @@ TEST(CriticalInvariance, TurningEitherPartShiftsTheCriticalOrientations) {
     const double accuracy = pair.tol.critical_angle;
     expect_same_angles(thetas(critical_orientations(turned_fixed)), shifted_fixed, accuracy);
     expect_same_angles(thetas(critical_orientations(turned_moving)), shifted_moving, accuracy);
+  }
+}
+
+// The same pair drawn in micrometres or in metres: every tolerance scales with the pair's size,
+// so the critical orientations are the same angles. Round-off differs with the scale, so this
+// also checks that no decision rests on which way it falls where designed parts are exactly
+// degenerate: the cam's double roots (parallel edges brought into line) gave 96
+// criticalities in the file's units and 192 at every other scale before they were merged.
+TEST(CriticalInvariance, ScalingThePairKeepsTheCriticalOrientations) {
+  for (const char* name : {"knee", "cam", "fixture", "fastener"}) {
+    const Pair pair = testkit::load_example(name);
+    const CriticalSet base = critical_orientations(pair);
+    for (double scale : {1e-3, 1e3}) {
+      const CriticalSet scaled = critical_orientations(testkit::moved_example(name, scale, 0, {}));
+      SCOPED_TRACE(std::string(name) + " scaled by " + std::to_string(scale));
+      expect_same_angles(thetas(scaled), thetas(base), pair.tol.critical_angle);
+      if (std::string(name) == "cam")
+        for (int c = 0; c < kCriticalConditionCount; ++c)
+          EXPECT_EQ(scaled.counts[c], base.counts[c]) << to_string(CriticalCondition(c));
+    }
+  }
+}
+
+// A mirror turns every rotation the other way: the critical orientations of the mirrored pair
+// are those of the pair, negated.
+TEST(CriticalInvariance, MirroringThePairNegatesTheCriticalOrientations) {
+  for (const char* name : {"knee", "cam", "fixture", "fastener"}) {
+    const Pair pair = testkit::load_example(name);
+    std::vector<double> negated;
+    for (double t : thetas(critical_orientations(pair))) negated.push_back(wrap_angle(-t));
+    SCOPED_TRACE(name);
+    expect_same_angles(thetas(critical_orientations(testkit::mirrored_example(name))), negated,
+                       pair.tol.critical_angle);
   }
 }
 

@@ -2,13 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <fstream>
 #include <numeric>
 #include <random>
 #include <sstream>
 #include <thread>
 
-#include <nlohmann/json.hpp>
 #include "cslice/classify.hpp"
 #include "cslice/critical.hpp"
 #include "cslice/equivalence.hpp"
@@ -17,6 +15,7 @@
 #include "slice/close_points.hpp"
 #include "support/designed_pairs.hpp"
 #include "support/examples.hpp"
+#include "support/moved_examples.hpp"
 #include "support/random_parts.hpp"
 #include "support/random_polygons.hpp"
 #include "support/slice_oracle.hpp"
@@ -27,29 +26,6 @@ namespace {
 
 using testkit::check_slice_against_classify;
 using testkit::load_example;
-
-// The pair file with every point of both parts moved by a rotation about the origin and
-// then a translation (bulges are unchanged by rigid motions).
-std::string moved_pair_json(const std::string& name, double angle, Vec2 shift) {
-  std::ifstream in(testkit::example_path(name));
-  nlohmann::json j = nlohmann::json::parse(in);
-  const Transform t(Pose{shift.x, shift.y, angle});
-  auto move = [&](nlohmann::json& xy) {
-    const Vec2 p = t.apply({xy[0].get<double>(), xy[1].get<double>()});
-    xy[0] = p.x;
-    xy[1] = p.y;
-  };
-  for (const char* part : {"moving", "fixed"}) {
-    for (auto& loop : j[part]["loops"]) {
-      if (loop.is_object()) {
-        move(loop["circle"]);
-      } else {
-        for (auto& vertex : loop) move(vertex);
-      }
-    }
-  }
-  return j.dump();
-}
 
 struct SliceSummary {
   int bounded = 0, unbounded = 0, realizable = 0, degenerate = 0;
@@ -343,7 +319,7 @@ TEST(SliceInvariance, MovingTheWholeSceneKeepsEverySlice) {
     const Pair pair = load_example(name);
     for (const auto& [phi, shift] :
          {std::pair<double, Vec2>{kPi, {0.0, 0.0}}, std::pair<double, Vec2>{0.7, {2.5, -1.25}}}) {
-      const Pair moved = *parse_pair(moved_pair_json(name, phi, shift), name).pair;
+      const Pair moved = testkit::moved_example(name, 1.0, phi, shift);
       for (double theta : {0.0, 0.9}) {
         // The moving part's body frame turned by phi too: theta means the same placement.
         expect_same_summary(compute_slice(pair, theta), compute_slice(moved, theta),

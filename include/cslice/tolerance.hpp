@@ -30,6 +30,17 @@ inline constexpr double kCriticalityPerGeometric = 1e3;
 // far below the criticality tolerance that validates it (src/criticals/events.cpp).
 inline constexpr double kWellPlacedTriplePoint = 1e-12;
 
+// A criticality equation whose extremum lies this close to zero, relative to its largest
+// coefficient (dimensionless), has a double root there even when round-off makes it cross:
+// a few hundred units in the last place of the terms that built the coefficients. The two
+// roots such a crossing gives lie within sqrt(2 * this) ~ 3e-7 rad of each other, inside one
+// critical angle, so merging them moves no critical orientation; it only stops the rounding
+// from deciding where the event is validated (src/criticals/trig.cpp).
+inline constexpr double kDoubleRootDepth = 4e-14;
+// Two roots are merged as one double root only when this close (radians): one critical angle
+// at any size, so that a merge never moves a critical orientation.
+inline constexpr double kDoubleRootSpan = kCriticalityPerGeometric * kRelativeGeometricEpsilon;
+
 // The flattest arc a part may have: its radius at most this many times the pair's size
 // (dimensionless); flatter arcs are refused with a message to make them straight. Contact
 // points of an arc's contacts travel at up to its radius R per radian (a vertex on a fixed

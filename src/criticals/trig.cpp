@@ -4,6 +4,8 @@
 #include <cassert>
 #include <utility>
 
+#include "cslice/tolerance.hpp"
+
 namespace cslice {
 
 Trig Trig::constant(double v) {
@@ -511,17 +513,49 @@ double harmonic_size(const Trig& f, int j) {
 }
 
 // a0 + a1 cos + b1 sin = a0 + A cos(theta - phi): theta = phi +- acos(-a0 / A); a double
-// root where |a0| = A to within `touch`.
+// root where |a0| = A to within `touch` above, or to within round-off below: f then dips
+// across zero by no more than the round-off of its coefficients (kDoubleRootDepth of its
+// norm), and which side the rounding fell must not decide between one root and two roots a
+// few 1e-8 rad apart, each placed where a family designed to switch exactly at the double
+// root may not exist yet (the cam's parallel edges gave two such roots in its file's units
+// and one at other scales).
 // Adds them to `r` (the caller's result, returned in place).
 void first_harmonic_roots(const Trig& f, double touch, double merge_angle, TrigRoots& r) {
   const double amplitude = harmonic_size(f, 1), phase = std::atan2(f.b[1], f.a[1]);
   const double c = -f.a[0] / amplitude;
   if (std::fabs(c) > 1.0 + touch) return;
-  const double spread = std::acos(std::clamp(c, -1.0, 1.0));
+  const bool twofold = amplitude - std::fabs(f.a[0]) <= kDoubleRootDepth * f.norm();
+  const double spread = twofold ? (c < 0.0 ? kPi : 0.0) : std::acos(std::clamp(c, -1.0, 1.0));
   double lo = wrap_angle(phase - spread), hi = wrap_angle(phase + spread);
   if (hi < lo) std::swap(lo, hi);
   r.roots.push_back(lo);
   if (!(hi - lo <= merge_angle || lo + kTwoPi - hi <= merge_angle)) r.roots.push_back(hi);
+}
+
+// Two neighbouring roots around an extremum that lies within kDoubleRootDepth of zero are
+// one double root that round-off pushed across (first_harmonic_roots gives the reason): they
+// become the extremum. Only roots within kDoubleRootSpan of each other, which one critical
+// orientation takes in anyway: an equation flat to round-off over a wider stretch (three
+// curves nearly concurrent for a while) has roots that round-off places, but merging them
+// would move a critical orientation, not just where it is validated.
+void merge_shallow_crossings(const Trig& f, double n, double merge_angle, TrigRoots& r) {
+  size_t kept = 0;
+  for (size_t i = 0; i < r.roots.size(); ++i) {
+    double theta = r.roots[i];
+    if (i + 1 < r.roots.size() && r.roots[i + 1] - theta <= kDoubleRootSpan) {
+      const double lo = theta, hi = r.roots[i + 1];
+      const double x = polish_extremum(f, 0.5 * (lo + hi));
+      // The extremum itself may be one of the two (found as a double root), give or take
+      // the angle roots are told apart by.
+      if (x >= lo - merge_angle && x <= hi + merge_angle &&
+          std::fabs(f(x)) <= kDoubleRootDepth * n) {
+        theta = x;
+        ++i;
+      }
+    }
+    r.roots.begin()[kept++] = theta;
+  }
+  r.roots.resize(kept);
 }
 
 // The stretches of t = tan(phi / 2), |t| <= 1, that a chart searches: phi = theta for the
@@ -623,6 +657,7 @@ void chart_roots(const Trig& f, double touch, double merge_angle,
   const double* last = std::unique(r.roots.begin(), r.roots.end(),
                                    [&](double x, double y) { return y - x <= merge_angle; });
   r.roots.resize(size_t(last - r.roots.begin()));
+  merge_shallow_crossings(f, n, merge_angle, r);
 }
 
 }  // namespace

@@ -1,0 +1,22 @@
+// The bundled examples moved as a whole, for invariance tests: what a user gets by drawing
+// the same pair in other units, turned, or elsewhere on the sheet.
+#pragma once
+
+#include <string>
+
+#include "cslice/geometry.hpp"
+#include "cslice/pair.hpp"
+
+namespace cslice::testkit {
+
+// The example with every point of both parts scaled by `scale` about the origin, then turned
+// by `angle` about it and shifted by `shift` (the moving part within its body frame). Bulges
+// are unchanged by similarities; circles' radii and a tolerance given as a number scale with
+// the points.
+Pair moved_example(const std::string& name, double scale, double angle, Vec2 shift);
+
+// The example seen in a mirror: x -> -x for both parts, so every arc turns the other way
+// (bulges negated) and every loop runs the other way round (the reader orients loops).
+Pair mirrored_example(const std::string& name);
+
+}  // namespace cslice::testkit
