@@ -4,6 +4,9 @@
 //   cslice_stress --designed FIRST LAST designed pairs FIRST..LAST-1 (testkit::designed_pair:
 //                                       unit grids, perfect fits, symmetric parts)
 //   cslice_stress PAIR.json ...         pair files (designed fits, imported parts)
+//   --scale K                           every random and designed pair drawn K times larger
+//                                       first (points, radii and tolerance): the same pair in
+//                                       other units, whose round-off differs
 //
 // Each pair goes through the checks the tests make on a few: the completeness of its
 // critical orientations (tests/support/completeness.hpp), its slices at random and at critical
@@ -32,6 +35,7 @@
 #include "support/designed_pairs.hpp"
 #include "support/failures.hpp"
 #include "support/mesh_census.hpp"
+#include "support/moved_examples.hpp"
 #include "support/random_parts.hpp"
 #include "support/slice_oracle.hpp"
 
@@ -42,6 +46,7 @@ namespace {
 std::vector<std::string> g_files;
 unsigned g_first = 0, g_last = 0;
 unsigned g_designed_first = 0, g_designed_last = 0;
+double g_scale = 1.0;
 
 // Closed and consistently oriented once the seam at theta = pi is identified, as
 // tests/test_mesh.cpp requires of its cases.
@@ -102,10 +107,14 @@ void check_seeds(unsigned first, unsigned last, testkit::RandomPair (*make)(unsi
                  const std::string& kind, int& checked, int& failed) {
   for (unsigned seed = first; seed < last; ++seed) {
     const testkit::RandomPair p = make(seed);
+    const std::string name = kind + " " + std::to_string(seed);
     ++checked;
-    if (!check_pair(p.pair, seed, kind + " " + std::to_string(seed))) {
+    const Pair pair = g_scale == 1.0 ? p.pair : testkit::moved_pair(p.json, name, g_scale, 0, {});
+    if (!check_pair(pair, seed, name)) {
       ++failed;
-      std::cout << "FAILED " << kind << " " << seed << ": " << p.json << "\n";
+      std::cout << "FAILED " << kind << " " << seed
+                << (g_scale == 1.0 ? "" : " scaled by " + std::to_string(g_scale)) << ": " << p.json
+                << "\n";
     }
   }
 }
@@ -140,6 +149,8 @@ int main(int argc, char** argv) {
       g_first = unsigned(std::stoul(argv[i + 1]));
       g_last = unsigned(std::stoul(argv[i + 2]));
       i += 2;
+    } else if (arg == "--scale" && i + 1 < argc) {
+      g_scale = std::stod(argv[++i]);
     } else if (arg == "--designed" && i + 2 < argc) {
       g_designed_first = unsigned(std::stoul(argv[i + 1]));
       g_designed_last = unsigned(std::stoul(argv[i + 2]));
@@ -149,8 +160,8 @@ int main(int argc, char** argv) {
     }
   }
   if (g_files.empty() && g_first >= g_last && g_designed_first >= g_designed_last) {
-    std::cerr
-        << "usage: cslice_stress --seeds FIRST LAST | --designed FIRST LAST | PAIR.json ...\n";
+    std::cerr << "usage: cslice_stress [--scale K] --seeds FIRST LAST | --designed FIRST LAST | "
+                 "PAIR.json ...\n";
     return 2;
   }
   return RUN_ALL_TESTS();

@@ -21,8 +21,7 @@ Pair parse_or_throw(const nlohmann::json& j, const std::string& name) {
   return std::move(*r.pair);
 }
 
-nlohmann::json moved_json(const std::string& name, double scale, double angle, Vec2 shift) {
-  nlohmann::json j = example_json(name);
+nlohmann::json moved_json(nlohmann::json j, double scale, double angle, Vec2 shift) {
   const Transform t(Pose{shift.x, shift.y, angle});
   auto move = [&](nlohmann::json& xy) {
     const Vec2 p = t.apply({scale * xy[0].get<double>(), scale * xy[1].get<double>()});
@@ -47,8 +46,13 @@ nlohmann::json moved_json(const std::string& name, double scale, double angle, V
 
 }  // namespace
 
+Pair moved_pair(const std::string& json_text, const std::string& name, double scale, double angle,
+                Vec2 shift) {
+  return parse_or_throw(moved_json(nlohmann::json::parse(json_text), scale, angle, shift), name);
+}
+
 Pair moved_example(const std::string& name, double scale, double angle, Vec2 shift) {
-  return parse_or_throw(moved_json(name, scale, angle, shift), name);
+  return parse_or_throw(moved_json(example_json(name), scale, angle, shift), name);
 }
 
 Pair mirrored_example(const std::string& name) {

@@ -9,10 +9,13 @@
 
 namespace cslice::testkit {
 
-// The example with every point of both parts scaled by `scale` about the origin, then turned
-// by `angle` about it and shifted by `shift` (the moving part within its body frame). Bulges
-// are unchanged by similarities; circles' radii and a tolerance given as a number scale with
-// the points.
+// The pair file's text with every point of both parts scaled by `scale` about the origin, then
+// turned by `angle` about it and shifted by `shift` (the moving part within its body frame).
+// Bulges are unchanged by similarities; circles' radii and a tolerance given as a number scale
+// with the points. Throws if the result does not load.
+Pair moved_pair(const std::string& json_text, const std::string& name, double scale, double angle,
+                Vec2 shift);
+// The same for a bundled example.
 Pair moved_example(const std::string& name, double scale, double angle, Vec2 shift);
 
 // The example seen in a mirror: x -> -x for both parts, so every arc turns the other way
