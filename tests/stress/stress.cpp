@@ -7,6 +7,8 @@
 //   --scale K                           every random and designed pair drawn K times larger
 //                                       first (points, radii and tolerance): the same pair in
 //                                       other units, whose round-off differs
+//   --offset X                          the fixed part of every random and designed pair
+//                                       moved by (X, -X / 2): a drawing far from its origin
 //
 // Each pair goes through the checks the tests make on a few: the completeness of its
 // critical orientations (tests/support/completeness.hpp), its slices at random and at critical
@@ -46,7 +48,7 @@ namespace {
 std::vector<std::string> g_files;
 unsigned g_first = 0, g_last = 0;
 unsigned g_designed_first = 0, g_designed_last = 0;
-double g_scale = 1.0;
+double g_scale = 1.0, g_offset = 0.0;
 
 // Closed and consistently oriented once the seam at theta = pi is identified, as
 // tests/test_mesh.cpp requires of its cases.
@@ -109,12 +111,16 @@ void check_seeds(unsigned first, unsigned last, testkit::RandomPair (*make)(unsi
     const testkit::RandomPair p = make(seed);
     const std::string name = kind + " " + std::to_string(seed);
     ++checked;
-    const Pair pair = g_scale == 1.0 ? p.pair : testkit::moved_pair(p.json, name, g_scale, 0, {});
+    const bool moved = g_scale != 1.0 || g_offset != 0.0;
+    const Pair pair =
+        moved ? testkit::moved_pair(p.json, name, g_scale, 0, {}, {g_offset, -0.5 * g_offset})
+              : p.pair;
     if (!check_pair(pair, seed, name)) {
       ++failed;
       std::cout << "FAILED " << kind << " " << seed
-                << (g_scale == 1.0 ? "" : " scaled by " + std::to_string(g_scale)) << ": " << p.json
-                << "\n";
+                << (g_scale == 1.0 ? "" : " scaled by " + std::to_string(g_scale))
+                << (g_offset == 0.0 ? "" : " fixed part moved by " + std::to_string(g_offset))
+                << ": " << p.json << "\n";
     }
   }
 }
@@ -151,6 +157,8 @@ int main(int argc, char** argv) {
       i += 2;
     } else if (arg == "--scale" && i + 1 < argc) {
       g_scale = std::stod(argv[++i]);
+    } else if (arg == "--offset" && i + 1 < argc) {
+      g_offset = std::stod(argv[++i]);
     } else if (arg == "--designed" && i + 2 < argc) {
       g_designed_first = unsigned(std::stoul(argv[i + 1]));
       g_designed_last = unsigned(std::stoul(argv[i + 2]));

@@ -21,14 +21,16 @@ Pair parse_or_throw(const nlohmann::json& j, const std::string& name) {
   return std::move(*r.pair);
 }
 
-nlohmann::json moved_json(nlohmann::json j, double scale, double angle, Vec2 shift) {
+nlohmann::json moved_json(nlohmann::json j, double scale, double angle, Vec2 shift,
+                          Vec2 fixed_offset = {}) {
   const Transform t(Pose{shift.x, shift.y, angle});
-  auto move = [&](nlohmann::json& xy) {
-    const Vec2 p = t.apply({scale * xy[0].get<double>(), scale * xy[1].get<double>()});
-    xy[0] = p.x;
-    xy[1] = p.y;
-  };
   for (const char* part : {"moving", "fixed"}) {
+    const Vec2 offset = std::string(part) == "fixed" ? fixed_offset : Vec2{};
+    auto move = [&](nlohmann::json& xy) {
+      const Vec2 p = t.apply({scale * xy[0].get<double>(), scale * xy[1].get<double>()}) + offset;
+      xy[0] = p.x;
+      xy[1] = p.y;
+    };
     for (auto& loop : j[part]["loops"]) {
       if (loop.is_object()) {
         nlohmann::json& circle = loop["circle"];
@@ -47,8 +49,9 @@ nlohmann::json moved_json(nlohmann::json j, double scale, double angle, Vec2 shi
 }  // namespace
 
 Pair moved_pair(const std::string& json_text, const std::string& name, double scale, double angle,
-                Vec2 shift) {
-  return parse_or_throw(moved_json(nlohmann::json::parse(json_text), scale, angle, shift), name);
+                Vec2 shift, Vec2 fixed_offset) {
+  return parse_or_throw(
+      moved_json(nlohmann::json::parse(json_text), scale, angle, shift, fixed_offset), name);
 }
 
 Pair moved_example(const std::string& name, double scale, double angle, Vec2 shift) {

@@ -12,9 +12,11 @@ namespace cslice::testkit {
 // The pair file's text with every point of both parts scaled by `scale` about the origin, then
 // turned by `angle` about it and shifted by `shift` (the moving part within its body frame).
 // Bulges are unchanged by similarities; circles' radii and a tolerance given as a number scale
-// with the points. Throws if the result does not load.
+// with the points. The fixed part alone is then shifted by `fixed_offset`: every slice shifts
+// with it, and the pair's size (measured from the body origin) grows, so do its tolerances: a
+// drawing placed far from its origin. Throws if the result does not load.
 Pair moved_pair(const std::string& json_text, const std::string& name, double scale, double angle,
-                Vec2 shift);
+                Vec2 shift, Vec2 fixed_offset = {});
 // The same for a bundled example.
 Pair moved_example(const std::string& name, double scale, double angle, Vec2 shift);
 
