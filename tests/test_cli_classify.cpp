@@ -50,6 +50,27 @@ TEST_F(CliClassify, ReadsPosesFromStandardInput) {
   EXPECT_EQ(r.out, "blocked\nfree\ncontact\ncontact\n");
 }
 
+// The same pair with the fixed block drawn 1,000 mm out: the answers shift with it, and the
+// command warns that the tolerances have grown with the distance (every pair file is loaded
+// the same way, so every command does).
+TEST_F(CliClassify, WarnsWhenTheFixedPartIsDrawnFarFromTheOrigin) {
+  const RunResult centred = run(pair() + " --at 2,0.5,0");
+  EXPECT_EQ(centred.status, 0) << centred.err;
+  EXPECT_EQ(centred.err, "");
+  write_file(dir_ / "far.json", R"({
+    "name": "cli-square-far", "units": "mm", "tolerance": 0.01,
+    "moving": { "loops": [[[0, 0], [1, 0], [1, 1], [0, 1]]] },
+    "fixed": { "loops": [[[1000, 0], [1002, 0], [1002, 2], [1000, 2]]] }
+  })");
+  const RunResult far = run(quoted(dir_ / "far.json") + " --at 1002,0.5,0 --at 1000.5,0.5,0");
+  EXPECT_EQ(far.status, 0) << far.err;
+  EXPECT_EQ(far.out, "contact\nblocked\n");
+  EXPECT_NE(far.err.find("far.json: the fixed part lies far from the moving part's body origin"),
+            std::string::npos)
+      << far.err;
+  EXPECT_NE(far.err.find("times coarser"), std::string::npos) << far.err;
+}
+
 TEST_F(CliClassify, EmptyInputGivesEmptyOutput) {
   const RunResult r = run(pair(), "");
   EXPECT_EQ(r.status, 0) << r.err;

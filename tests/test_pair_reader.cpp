@@ -145,6 +145,21 @@ TEST(PairReader, DefaultsAndSize) {
   EXPECT_EQ(p.fixed.name, "fixed");
 }
 
+// The size reaches from the body origin to the fixed part; drawn 1,000 out, the fixed square
+// makes it about 71 times what it would be centred, and so every tolerance.
+TEST(PairReader, PlacementCoarseningIsTheSizeOverTheCentredSize) {
+  const Pair near = parse_ok(fixed_loops(R"([[0,0],[10,0],[10,10],[0,10]])"));
+  // Centred, the fixed box [-5, 5]^2 holds the unit square's reach sqrt(2).
+  EXPECT_NEAR(placement_coarsening(near.moving, near.fixed), near.tol.size / (10 * std::sqrt(2.0)),
+              1e-12);
+  const Pair far = parse_ok(fixed_loops(R"([[1000,0],[1010,0],[1010,10],[1000,10]])"));
+  const double reach = std::sqrt(2.0);
+  EXPECT_NEAR(far.tol.size, std::hypot(1010 + reach, 10 + reach), 1e-9);
+  EXPECT_NEAR(placement_coarsening(far.moving, far.fixed), far.tol.size / (10 * std::sqrt(2.0)),
+              1e-9);
+  EXPECT_GT(placement_coarsening(far.moving, far.fixed), kPlacementCoarseningWarning);
+}
+
 TEST(PairReader, ExplicitNameUnitsTolerance) {
   const Pair p = parse_ok(pair_text(part_of(kUnitSquare), part_of(kBigSquare),
                                     R"("name": "peg", "units": "in", "tolerance": 0.05, )"));

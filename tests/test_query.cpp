@@ -17,6 +17,7 @@
 #include "support/cli_run.hpp"
 #include "support/designed_pairs.hpp"
 #include "support/examples.hpp"
+#include "support/moved_examples.hpp"
 #include "support/random_parts.hpp"
 #include "support/spaces.hpp"
 
@@ -184,6 +185,31 @@ TEST(SpaceQuery, ContactNearAPerfectFitIsWithinTheBand) {
   EXPECT_EQ(testkit::compare_queries_with_classify(pair, space, fresh, 600, 6008, "designed-6008")
                 .mismatches,
             0);
+}
+
+// Designed pair 255, a disc of diameter 1 turning about a point off its centre in an L-shaped
+// slot 1 wide, with the slot drawn 30 mm out: the tolerances grow with that distance, so do the
+// steps between stored slices (pi / 3 here, no critical orientation). The small free region
+// moves further than its own width from one stored slice to the next, so a query between them
+// (answered from a slice computed at its theta) finds its component's sample in none of them;
+// the region's boundary labels name it there. It used to be answered free with no 3D
+// component (-1).
+TEST(SpaceQuery, AComponentThatMovedFurtherThanItsWidthIsNamedByItsLabels) {
+  const testkit::RandomPair designed = testkit::designed_pair(255);
+  const Pair pair = testkit::moved_pair(designed.json, "designed-255", 1, 0, {}, {30, -15});
+  const SlicedSpace space = space_of(pair);
+  ASSERT_TRUE(space.criticals.orientations.empty());
+  ASSERT_EQ(space.topology.components.size(), 1u);
+  SpaceQuery q(pair, space);
+  PlacementTester tester(pair);
+  for (const Pose& pose : {Pose{30.591938386, -13.378634277, 1.430701513},
+                           Pose{30.588483501, -13.435712441, 1.429461348},
+                           Pose{30.318293096, -13.742740562, -2.719079958}}) {
+    EXPECT_EQ(tester.classify(pose), Placement::free);
+    const QueryAnswer a = q.query(pose);
+    EXPECT_EQ(a.placement, Placement::free);
+    EXPECT_EQ(a.component, 0);
+  }
 }
 
 class QueryCli : public testkit::ScratchDirTest {

@@ -46,5 +46,10 @@ LoadResult load_pair(const std::string& path);
 // The size every tolerance scales with: the diagonal of the box holding the fixed part and
 // the moving part's disc of reach (its farthest point from the body origin, any rotation).
 double pair_size(const Part& moving, const Part& fixed);
+// How many times pair_size exceeds what it would be with the fixed part's box centred on the
+// moving part's body origin (1 for a centred pair): a fixed part drawn far from that origin
+// makes every tolerance this many times coarser than the parts themselves need, because
+// round-off grows with the coordinates.
+double placement_coarsening(const Part& moving, const Part& fixed);
 
 }  // namespace cslice

@@ -29,11 +29,26 @@ bool read_finite_numbers(const std::string& text, std::initializer_list<double*>
   return !(in >> extra);
 }
 
+// A pair whose tolerances are much coarser than its parts need only because the fixed part
+// sits far from the moving part's body origin still gets its answer, with the reason and the
+// remedy on standard error.
+void warn_if_placed_far(const std::string& path, const Pair& pair) {
+  const double coarsening = placement_coarsening(pair.moving, pair.fixed);
+  if (!(coarsening >= kPlacementCoarseningWarning)) return;
+  std::fprintf(stderr,
+               "cslice: warning: %s: the fixed part lies far from the moving part's body origin, "
+               "so every tolerance is %.0f times coarser than the parts need (geometric %.3g, "
+               "contact %.3g %s); draw the fixed part near the origin for full accuracy "
+               "(docs/pair-format.md, Size and tolerances)\n",
+               path.c_str(), coarsening, pair.tol.geometric, pair.tol.contact, pair.units.c_str());
+}
+
 }  // namespace
 
 Pair load_pair_or_exit(const std::string& path) {
   LoadResult result = load_pair(path);
   if (!result.ok()) throw ExitError(kExitBadInput, result.error->message());
+  warn_if_placed_far(path, *result.pair);
   return std::move(*result.pair);
 }
 

@@ -267,10 +267,17 @@ std::string InputError::message() const {
   return m + reason;
 }
 
-double pair_size(const Part& moving, const Part& fixed) {
+namespace {
+
+Box fixed_box(const Part& fixed) {
   Box box;
   for (const Loop& loop : fixed.loops)
     for (const Curve& c : loop.edges) box.add(bounding_box(c));
+  return box;
+}
+
+// The diagonal of `box` and the moving part's disc of reach about the origin.
+double size_with_reach(Box box, const Part& moving) {
   const bool any_moving = std::any_of(moving.loops.begin(), moving.loops.end(),
                                       [](const Loop& loop) { return !loop.edges.empty(); });
   if (any_moving) {
@@ -279,6 +286,23 @@ double pair_size(const Part& moving, const Part& fixed) {
     box.add(Vec2{reach, reach});
   }
   return box.diagonal();
+}
+
+}  // namespace
+
+double pair_size(const Part& moving, const Part& fixed) {
+  return size_with_reach(fixed_box(fixed), moving);
+}
+
+double placement_coarsening(const Part& moving, const Part& fixed) {
+  const Box box = fixed_box(fixed);
+  if (box.empty()) return 1.0;
+  const Vec2 centre = 0.5 * (box.lo + box.hi);
+  Box centred;
+  centred.add(box.lo - centre);
+  centred.add(box.hi - centre);
+  const double centred_size = size_with_reach(centred, moving);
+  return centred_size > 0.0 ? size_with_reach(box, moving) / centred_size : 1.0;
 }
 
 LoadResult parse_pair(std::string_view json_text, std::string_view source) {

@@ -435,15 +435,30 @@ struct SpaceQuery::Impl {
       a.component = components->at(c);
       return a;
     }
+    a.component = stored_component_of(slice, c, interval);
+    return a;
+  }
+
+  // The 3D component of free component c of a slice inside `interval`: where its sample lies
+  // in a stored slice of the interval or, for a component that moved further than its own
+  // width since the nearest of them (a small region turning about a far origin, with stored
+  // slices a large step apart), the one component there with its boundary labels: the
+  // slices of one interval are equivalent (the topology matches them the same way).
+  int stored_component_of(const Slice& slice, int c, int interval) const {
     const Vec2 sample = slice.free_components[c].sample;
     for (int s : intervals[interval].stored) {
       const int sc = space.slices[s].slice.locate(sample);
-      if (sc >= 0) {
-        a.component = space.topology.slice_components[s][sc];
-        break;
-      }
+      if (sc >= 0) return space.topology.slice_components[s][sc];
     }
-    return a;
+    const std::vector<SegmentLabel> labels = boundary_labels(slice, slice.free_components[c]);
+    for (int s : intervals[interval].stored) {
+      const Slice& stored = space.slices[s].slice;
+      int match = -1, matches = 0;
+      for (const FreeComponent& fc : stored.free_components)
+        if (boundary_labels(stored, fc) == labels) match = fc.id, ++matches;
+      if (matches == 1) return space.topology.slice_components[s][match];
+    }
+    return -1;
   }
 
   // FALLBACK: the slice computed at theta (not from the stored structure), kept for reuse.
