@@ -183,6 +183,15 @@ TEST(Trig, ADoubleRootIsOneRootWhicheverWayRoundOffFalls) {
     ASSERT_EQ(r2.roots.size(), 2u) << depth;
     EXPECT_NEAR(r2.roots[0], 0.25 - kPi, kRootAccuracy) << depth;
     EXPECT_NEAR(r2.roots[1], 0.25, kRootAccuracy) << depth;
+    // The same at theta = 0 and pi, the middles of the two charts (t = 0, where a bound
+    // taken at the extremum is the constant term alone) and where the sorted roots wrap.
+    Trig c0 = Trig::constant(-(1.0 + depth));
+    c0.top = 2;
+    c0.a[2] = 1.0;
+    const TrigRoots r0 = trig_roots(c0, 1e-14, 1e-9, 1e-9);
+    ASSERT_EQ(r0.roots.size(), 2u) << depth;
+    EXPECT_NEAR(std::fabs(r0.roots[0]), kPi, kRootAccuracy) << depth;
+    EXPECT_NEAR(r0.roots[1], 0.0, kRootAccuracy) << depth;
   }
 }
 

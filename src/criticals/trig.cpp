@@ -431,7 +431,11 @@ double evaluation_bound(const Poly& p, double t) {
 
 // Real roots of p in [lo, hi]: the roots of p' split the interval into pieces where p is
 // monotone, each holding at most one root; an extremum where p nearly vanishes is a double
-// root that no sign change reveals. `touch` is relative to the evaluation bound.
+// root that no sign change reveals. `touch` is relative to the evaluation bound over the
+// chart (|t| <= 1), not at the extremum: at t = 0 that would be the constant term alone,
+// which then never counts as nearly zero, and a double root at theta = 0 or pi (a designed
+// alignment) that round-off leaves just short of zero was missed. The caller checks |f|
+// against its own norm again after polishing.
 void real_roots(const Poly& p, double lo, double hi, double touch, RootList& out,
                 RootList* double_roots) {
   if (p.size <= 1) return;
@@ -454,7 +458,7 @@ void real_roots(const Poly& p, double lo, double hi, double touch, RootList& out
     } else if (f0 != 0.0 && (f0 < 0.0) != (f1 < 0.0)) {
       out.push(refine_bracketed(p, dp, x0, x1, f0));
     } else if (double_roots && i + 1 < turns.count &&
-               std::fabs(f1) <= touch * evaluation_bound(p, x1)) {
+               std::fabs(f1) <= touch * evaluation_bound(p, 1.0)) {
       double_roots->push(x1);
     }
     x0 = x1;
@@ -556,6 +560,16 @@ void merge_shallow_crossings(const Trig& f, double n, double merge_angle, TrigRo
     r.roots.begin()[kept++] = theta;
   }
   r.roots.resize(kept);
+  // The same across theta = +-pi, where the sorted list wraps.
+  if (kept < 2) return;
+  const double lo = r.roots[kept - 1], hi = r.roots[0] + kTwoPi;
+  if (hi - lo > kDoubleRootSpan) return;
+  const double x = polish_extremum(f, 0.5 * (lo + hi));
+  if (x < lo - merge_angle || x > hi + merge_angle || std::fabs(f(x)) > kDoubleRootDepth * n)
+    return;
+  r.roots.begin()[0] = wrap_angle(x);
+  r.roots.resize(kept - 1);
+  std::sort(r.roots.begin(), r.roots.end());
 }
 
 // The stretches of t = tan(phi / 2), |t| <= 1, that a chart searches: phi = theta for the
