@@ -304,7 +304,10 @@ TEST(CriticalInvariance, TurningEitherPartShiftsTheCriticalOrientations) {
 // so the critical orientations are the same angles. Round-off differs with the scale, so this
 // also checks that no decision rests on which way it falls where designed parts are exactly
 // degenerate: the cam's double roots (parallel edges brought into line) gave 96
-// criticalities in the file's units and 192 at every other scale before they were merged.
+// criticalities in the file's units and 192 at every other scale before they were merged,
+// and the knee's families listed a switch twice or once. (The fixture's and fastener's
+// counts still differ by a few ill-conditioned triple points, at orientations they have
+// anyway: docs/criticals.md, Stress runs.)
 TEST(CriticalInvariance, ScalingThePairKeepsTheCriticalOrientations) {
   for (const char* name : {"knee", "cam", "fixture", "fastener"}) {
     const Pair pair = testkit::load_example(name);
@@ -313,7 +316,9 @@ TEST(CriticalInvariance, ScalingThePairKeepsTheCriticalOrientations) {
       const CriticalSet scaled = critical_orientations(testkit::moved_example(name, scale, 0, {}));
       SCOPED_TRACE(std::string(name) + " scaled by " + std::to_string(scale));
       expect_same_angles(thetas(scaled), thetas(base), pair.tol.critical_angle);
-      if (std::string(name) == "cam")
+      // The knee listed one segment end more drawn 1,000 times smaller (two switches of one
+      // family that round-off made equal or not).
+      if (std::string(name) == "cam" || std::string(name) == "knee")
         for (int c = 0; c < kCriticalConditionCount; ++c)
           EXPECT_EQ(scaled.counts[c], base.counts[c]) << to_string(CriticalCondition(c));
     }

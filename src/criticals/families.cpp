@@ -84,6 +84,19 @@ ContactFamily disc_on_disc(const ContactFeature& m, const ContactFeature& f, dou
   return fam;
 }
 
+// Sorts the switches and keeps one of each run closer than the angular tolerance (across
+// theta = +-pi too): an alive range's end and a switch of ends computed by different sums
+// agree only to round-off, and whether they came out equal must not decide whether the family
+// lists one segment end or two (the knee listed one more drawn 1,000 times smaller).
+void merge_close_switches(std::vector<double>& switches, double angular) {
+  std::sort(switches.begin(), switches.end());
+  switches.erase(std::unique(switches.begin(), switches.end(),
+                             [&](double a, double b) { return b - a <= angular; }),
+                 switches.end());
+  if (switches.size() >= 2 && switches.front() + kTwoPi - switches.back() <= angular)
+    switches.pop_back();
+}
+
 }  // namespace
 
 std::vector<ContactFamily> contact_families(const Pair& pair) {
@@ -105,8 +118,7 @@ std::vector<ContactFamily> contact_families(const Pair& pair) {
         fam.switches.push_back(fam.alive.lo);
         fam.switches.push_back(wrap_angle(fam.alive.lo + fam.alive.span));
       }
-      std::sort(fam.switches.begin(), fam.switches.end());
-      fam.switches.erase(std::unique(fam.switches.begin(), fam.switches.end()), fam.switches.end());
+      merge_close_switches(fam.switches, pair.tol.angular);
       out.push_back(std::move(fam));
     }
   }
