@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <optional>
 #include <utility>
 
 #include "cslice/tolerance.hpp"
@@ -536,24 +537,30 @@ void first_harmonic_roots(const Trig& f, double touch, double merge_angle, TrigR
   if (!(hi - lo <= merge_angle || lo + kTwoPi - hi <= merge_angle)) r.roots.push_back(hi);
 }
 
-// Two neighbouring roots around an extremum that lies within kDoubleRootDepth of zero are
-// one double root that round-off pushed across (first_harmonic_roots gives the reason): they
-// become the extremum. Only roots within kDoubleRootSpan of each other, which one critical
-// orientation takes in anyway: an equation flat to round-off over a wider stretch (three
-// curves nearly concurrent for a while) has roots that round-off places, but merging them
-// would move a critical orientation, not just where it is validated.
+// The extremum of f between two neighbouring roots lo < hi, if it lies within
+// kDoubleRootDepth of zero (n is f's norm): the two are then one double root that round-off
+// pushed across (first_harmonic_roots gives the reason). The extremum itself may be one of
+// the two (found as a double root), give or take the angle roots are told apart by.
+std::optional<double> shallow_extremum(const Trig& f, double n, double lo, double hi,
+                                       double merge_angle) {
+  const double x = polish_extremum(f, 0.5 * (lo + hi));
+  if (x < lo - merge_angle || x > hi + merge_angle || std::fabs(f(x)) > kDoubleRootDepth * n)
+    return std::nullopt;
+  return x;
+}
+
+// Neighbouring roots around a shallow extremum become that extremum. Only roots within
+// kDoubleRootSpan of each other, which one critical orientation takes in anyway: an equation
+// flat to round-off over a wider stretch (three curves nearly concurrent for a while) has
+// roots that round-off places, but merging them would move a critical orientation, not just
+// where it is validated.
 void merge_shallow_crossings(const Trig& f, double n, double merge_angle, TrigRoots& r) {
   size_t kept = 0;
   for (size_t i = 0; i < r.roots.size(); ++i) {
     double theta = r.roots[i];
     if (i + 1 < r.roots.size() && r.roots[i + 1] - theta <= kDoubleRootSpan) {
-      const double lo = theta, hi = r.roots[i + 1];
-      const double x = polish_extremum(f, 0.5 * (lo + hi));
-      // The extremum itself may be one of the two (found as a double root), give or take
-      // the angle roots are told apart by.
-      if (x >= lo - merge_angle && x <= hi + merge_angle &&
-          std::fabs(f(x)) <= kDoubleRootDepth * n) {
-        theta = x;
+      if (const auto x = shallow_extremum(f, n, theta, r.roots[i + 1], merge_angle)) {
+        theta = *x;
         ++i;
       }
     }
@@ -564,10 +571,9 @@ void merge_shallow_crossings(const Trig& f, double n, double merge_angle, TrigRo
   if (kept < 2) return;
   const double lo = r.roots[kept - 1], hi = r.roots[0] + kTwoPi;
   if (hi - lo > kDoubleRootSpan) return;
-  const double x = polish_extremum(f, 0.5 * (lo + hi));
-  if (x < lo - merge_angle || x > hi + merge_angle || std::fabs(f(x)) > kDoubleRootDepth * n)
-    return;
-  r.roots.begin()[0] = wrap_angle(x);
+  const auto x = shallow_extremum(f, n, lo, hi, merge_angle);
+  if (!x) return;
+  r.roots.begin()[0] = wrap_angle(*x);
   r.roots.resize(kept - 1);
   std::sort(r.roots.begin(), r.roots.end());
 }

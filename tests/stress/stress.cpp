@@ -168,7 +168,8 @@ int main(int argc, char** argv) {
     }
   }
   if (g_files.empty() && g_first >= g_last && g_designed_first >= g_designed_last) {
-    std::cerr << "usage: cslice_stress [--scale K] --seeds FIRST LAST | --designed FIRST LAST | "
+    std::cerr << "usage: cslice_stress [--scale K] [--offset X] --seeds FIRST LAST | --designed "
+                 "FIRST LAST | "
                  "PAIR.json ...\n";
     return 2;
   }

@@ -16,10 +16,9 @@ namespace cslice::testkit {
 bool deep_blocked(PlacementTester& tester, const Pose& pose, double d);
 
 // Whether a realizable piece or a perfect fit of the slice at the pose's theta passes within
-// d of it: the
-// eight probes of deep_blocked miss the tip of a free wedge narrower than their spacing
-// (stress seeds 100050, 100158, 100206: blocked in all eight directions, yet 0.0078 from the
-// tip of a thin pocket, with a contact tolerance of 0.0086).
+// d of it: the eight probes of deep_blocked miss the tip of a free wedge narrower than their
+// spacing (stress seeds 100050, 100158, 100206: blocked in all eight directions, yet 0.0078
+// from the tip of a thin pocket, with a contact tolerance of 0.0086).
 bool near_realizable(const Pair& pair, const Pose& pose, double d);
 // Whether a critical orientation lies within the critical angle of the pose's theta with a
 // realizable piece within d of (x, y) in its slice, where the query answers from.

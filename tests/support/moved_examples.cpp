@@ -2,9 +2,9 @@
 
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
 
 #include "support/examples.hpp"
+#include "support/random_polygons.hpp"
 
 namespace cslice::testkit {
 
@@ -15,10 +15,22 @@ nlohmann::json example_json(const std::string& name) {
   return nlohmann::json::parse(in);
 }
 
-Pair parse_or_throw(const nlohmann::json& j, const std::string& name) {
-  LoadResult r = parse_pair(j.dump(), name);
-  if (!r.ok()) throw std::runtime_error(r.error->message());
-  return std::move(*r.pair);
+// Calls on_point(xy, radius) for every vertex and circle of a part: xy is its [x, y, ...]
+// array (a vertex's bulge follows), radius the circle's radius entry or nullptr.
+template <class OnPoint>
+void for_each_point(nlohmann::json& part, OnPoint on_point) {
+  for (auto& loop : part["loops"]) {
+    if (loop.is_object()) {
+      nlohmann::json& circle = loop["circle"];
+      on_point(circle, &circle[2]);
+    } else {
+      for (auto& vertex : loop) on_point(vertex, nullptr);
+    }
+  }
+}
+
+Pair parse_json_or_throw(const nlohmann::json& j, const std::string& name) {
+  return parse_or_throw(j.dump(), name);
 }
 
 nlohmann::json moved_json(nlohmann::json j, double scale, double angle, Vec2 shift,
@@ -26,20 +38,12 @@ nlohmann::json moved_json(nlohmann::json j, double scale, double angle, Vec2 shi
   const Transform t(Pose{shift.x, shift.y, angle});
   for (const char* part : {"moving", "fixed"}) {
     const Vec2 offset = std::string(part) == "fixed" ? fixed_offset : Vec2{};
-    auto move = [&](nlohmann::json& xy) {
+    for_each_point(j[part], [&](nlohmann::json& xy, nlohmann::json* radius) {
       const Vec2 p = t.apply({scale * xy[0].get<double>(), scale * xy[1].get<double>()}) + offset;
       xy[0] = p.x;
       xy[1] = p.y;
-    };
-    for (auto& loop : j[part]["loops"]) {
-      if (loop.is_object()) {
-        nlohmann::json& circle = loop["circle"];
-        move(circle);
-        circle[2] = scale * circle[2].get<double>();
-      } else {
-        for (auto& vertex : loop) move(vertex);
-      }
-    }
+      if (radius) *radius = scale * radius->get<double>();
+    });
   }
   if (j.contains("tolerance") && j["tolerance"].is_number())
     j["tolerance"] = scale * j["tolerance"].get<double>();
@@ -50,29 +54,23 @@ nlohmann::json moved_json(nlohmann::json j, double scale, double angle, Vec2 shi
 
 Pair moved_pair(const std::string& json_text, const std::string& name, double scale, double angle,
                 Vec2 shift, Vec2 fixed_offset) {
-  return parse_or_throw(
+  return parse_json_or_throw(
       moved_json(nlohmann::json::parse(json_text), scale, angle, shift, fixed_offset), name);
 }
 
 Pair moved_example(const std::string& name, double scale, double angle, Vec2 shift) {
-  return parse_or_throw(moved_json(example_json(name), scale, angle, shift), name);
+  return parse_json_or_throw(moved_json(example_json(name), scale, angle, shift), name);
 }
 
 Pair mirrored_example(const std::string& name) {
   nlohmann::json j = example_json(name);
   for (const char* part : {"moving", "fixed"}) {
-    for (auto& loop : j[part]["loops"]) {
-      if (loop.is_object()) {
-        loop["circle"][0] = -loop["circle"][0].get<double>();
-      } else {
-        for (auto& vertex : loop) {
-          vertex[0] = -vertex[0].get<double>();
-          if (vertex.size() > 2) vertex[2] = -vertex[2].get<double>();
-        }
-      }
-    }
+    for_each_point(j[part], [](nlohmann::json& xy, const nlohmann::json* radius) {
+      xy[0] = -xy[0].get<double>();
+      if (!radius && xy.size() > 2) xy[2] = -xy[2].get<double>();  // the bulge
+    });
   }
-  return parse_or_throw(j, name);
+  return parse_json_or_throw(j, name);
 }
 
 }  // namespace cslice::testkit
