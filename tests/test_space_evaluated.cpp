@@ -30,6 +30,7 @@ SlicedSpace space_of(const Pair& pair, bool evaluate) {
   SpaceOptions options;
   options.threads = 2;
   options.evaluate_slices = evaluate;
+  options.map_symmetric = false;  // every intermediate slice evaluated, none mapped
   return compute_space(pair, options);
 }
 

@@ -94,6 +94,9 @@ struct Slice {
   // Area of blocked space; infinite when it is unbounded (the fixed part is an enclosure).
   double blocked_area = 0.0;
   double epsilon = 0.0;  // the pair's geometric epsilon: locate's band around contact space
+  // Some realizable piece lies along two or more contact segments: it names the one of lowest
+  // id, an order that a slice mapped across a symmetry does not keep (symmetry.hpp).
+  bool coincident_pieces = false;
 
   // The free component whose interior holds p, or -1 (blocked, or within the geometric
   // epsilon of contact space).

@@ -36,6 +36,8 @@ struct SpaceSlice {
   // Evaluated from the boundary structure of its interval's representative
   // (SpaceOptions::evaluate_slices) rather than computed from scratch.
   bool evaluated = false;
+  // Mapped from another slice across a symmetry of the pair (SpaceOptions::map_symmetric).
+  bool mapped = false;
 };
 
 // How the realizable contact segments of slice `from` correspond to those of the next slice
@@ -167,6 +169,11 @@ struct SpaceOptions {
   // structure can be modelled; false computes every slice from scratch (the tests compare
   // the two). Files are read back with the default.
   bool evaluate_slices = true;
+  // Slices at the image of another slice's orientation under a symmetry of the pair (a
+  // quarter turn or mirror mapping both parts onto themselves, include/cslice/symmetry.hpp)
+  // mapped from that slice; false computes them (the tests compare the two). Files are read
+  // back with the default.
+  bool map_symmetric = true;
 };
 
 struct TopologyOptions {

@@ -84,6 +84,15 @@ inline constexpr double kMeshSpikePerGeometric = kCriticalityPerGeometric;
 // than the slices themselves may be apart.
 inline constexpr double kMeshPlaneSnapPerTolerance = 0.5;
 
+// A part is symmetric under a quarter turn or mirror (include/cslice/symmetry.hpp) when every
+// feature's image lies within this much of a feature of the same kind, relative to the pair's
+// size: the round-off of coordinates drawn symmetric about a line off the origin (a mirror
+// about x = 2.1 computes 4.2 - x, a unit in the last place of the coordinates), with a
+// thousandfold margin. It sits a thousand times below the geometric epsilon, so a slice mapped
+// across the symmetry differs from the slice computed at the image orientation by less than
+// the round-off the computation carries anyway, and no part that a designer drew asymmetric on
+// purpose passes for symmetric.
+inline constexpr double kRelativeSymmetrySlack = 1e-12;
 // Every tolerance scales with the pair's size, which reaches from the moving part's body
 // origin to the fixed part (round-off grows with the coordinates). A fixed part drawn so far
 // out that its size is this many times its centred size (placement_coarsening,

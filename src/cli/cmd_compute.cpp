@@ -27,6 +27,7 @@ void run(const ComputeCommand& cmd) {
   options.threads = cmd.threads;
   options.verify_joins = cmd.verify_joins;
   options.evaluate_slices = !cmd.from_scratch;
+  options.map_symmetric = !cmd.from_scratch;
   std::optional<ProgressLine> progress(std::in_place, "cslice compute");
   options.progress = progress->report();
   const SlicedSpace space = compute_space(pair, options);
@@ -53,7 +54,8 @@ void register_compute(CLI::App& app) {
                 "even where the free-component counts decide the joins (slower; same result)");
   sub->add_flag("--from-scratch", cmd->from_scratch,
                 "Every slice computed from scratch, none evaluated from its interval's\n"
-                "representative (slower; the same result to round-off)");
+                "representative or mapped across a symmetry of the pair (slower; the same\n"
+                "result to round-off)");
   sub->callback([cmd] { run(*cmd); });
 }
 

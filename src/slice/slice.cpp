@@ -289,7 +289,10 @@ class SliceBuilder {
     slice_.realizable.reserve(std::count(realizable_.begin(), realizable_.end(), true));
     const size_t edges = arr_->edges.size();  // read once: the stores below could alias it
     for (size_t e = 0; e < edges; ++e)
-      if (realizable_[e]) add_piece(slice_.realizable, int(2 * e));
+      if (realizable_[e]) {
+        add_piece(slice_.realizable, int(2 * e));
+        if (arr_->edges[e].labels.size() > 1) slice_.coincident_pieces = true;
+      }
     slice_.free_components.reserve(std::count(blocked_.begin(), blocked_.end(), false));
     for (size_t f = 0; f < arr_->faces.size(); ++f) {
       if (blocked_[f]) {

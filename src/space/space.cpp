@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <iterator>
 #include <span>
 
 #include "criticals/families.hpp"
 #include "cslice/slice_io.hpp"
+#include "cslice/symmetry.hpp"
 #include "space/space_build.hpp"
 
 namespace cslice {
@@ -107,8 +109,66 @@ void for_each_index_parallel(const Pair& pair, size_t count, int threads,
                                         [&](size_t i, SlicerWorker& w) { slice_at(i, w.slicer); });
 }
 
+namespace {
+
+// Which planned slices are mapped across a symmetry of the pair (docs/symmetry.md) rather
+// than computed: source[i] is the slice that slice i is the image of (-1: none), under
+// symmetries[symmetry[i]]. Decided before any slice is computed, in plan order, so that the
+// result does not depend on the thread count.
+struct ImagePlan {
+  std::vector<int> source, symmetry;
+  std::vector<char> is_source;
+};
+
+// The planned slice within `angular` of theta, or -1 (the plan is sorted by theta).
+int planned_near(const std::vector<Planned>& plan, double theta, double angular) {
+  const auto it = std::lower_bound(plan.begin(), plan.end(), theta,
+                                   [](const Planned& p, double t) { return p.theta < t; });
+  const int n = static_cast<int>(plan.size()), at = static_cast<int>(it - plan.begin());
+  // Its neighbours either side, the first and last wrapping round through theta = +-pi.
+  for (int i : {at % n, (at + n - 1) % n})
+    if (std::fabs(wrap_angle(plan[i].theta - theta)) <= angular) return i;
+  return -1;
+}
+
+// Each slice that `may_source` accepts and that is no image yet becomes a source, and every
+// unassigned slice that `may_image` accepts at one of its symmetric orientations its image.
+template <class Source, class Image>
+void assign_images(const std::vector<Planned>& plan, const std::vector<PairSymmetry>& symmetries,
+                   double angular, Source may_source, Image may_image, ImagePlan& out) {
+  for (size_t k = 0; k < plan.size(); ++k) {
+    if (out.source[k] >= 0 || out.is_source[k] || !may_source(plan[k])) continue;
+    out.is_source[k] = true;
+    for (size_t s = 0; s < symmetries.size(); ++s) {
+      const int j = planned_near(plan, symmetries[s].image_theta(plan[k].theta), angular);
+      if (j < 0 || out.is_source[j] || out.source[j] >= 0 || !may_image(plan[j])) continue;
+      out.source[j] = static_cast<int>(k);
+      out.symmetry[j] = static_cast<int>(s);
+    }
+  }
+}
+
+// Slices computed from scratch (critical and interval ones, and intermediate ones when not
+// evaluated) are mapped to any slice; evaluated intermediate ones only to other intermediate
+// ones, as they need their interval's representative first.
+ImagePlan plan_images(const std::vector<Planned>& plan, const std::vector<PairSymmetry>& symmetries,
+                      double angular, bool evaluate) {
+  ImagePlan out{std::vector<int>(plan.size(), -1), std::vector<int>(plan.size(), -1),
+                std::vector<char>(plan.size(), false)};
+  if (symmetries.empty() || plan.empty()) return out;
+  const auto evaluated = [&](const Planned& p) {
+    return evaluate && p.kind == SliceKind::intermediate;
+  };
+  const auto any = [](const Planned&) { return true; };
+  assign_images(plan, symmetries, angular, std::not_fn(evaluated), any, out);
+  assign_images(plan, symmetries, angular, evaluated, evaluated, out);
+  return out;
+}
+
+}  // namespace
+
 std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Planned>& plan,
-                                       int threads, bool evaluate, const ProgressReport& progress,
+                                       const SliceRules& rules, const ProgressReport& progress,
                                        KnownModels* models) {
   std::vector<SpaceSlice> out(plan.size());
   if (models) models->assign(plan.size(), std::nullopt);
@@ -117,9 +177,12 @@ std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Plann
     out[i] = {plan[i].theta, plan[i].kind, plan[i].interval, std::move(slice), evaluated};
     if (progress) progress("slices", ++done, plan.size());
   };
-  // Critical and representative slices first, from scratch; then per interval its
-  // intermediate ones.
-  std::vector<size_t> first;
+  const std::vector<PairSymmetry> symmetries =
+      rules.map_symmetric ? pair_symmetries(pair) : std::vector<PairSymmetry>{};
+  const ImagePlan images = plan_images(plan, symmetries, pair.tol.angular, rules.evaluate);
+  // Critical and representative slices first, from scratch, and their images; then per
+  // interval its intermediate ones, and theirs.
+  std::vector<size_t> first, first_images, later_images;
   std::vector<std::vector<size_t>> later;
   std::vector<int> representative;
   for (size_t i = 0; i < plan.size(); ++i) {
@@ -129,26 +192,55 @@ std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Plann
       representative.resize(interval + 1, -1);
     }
     if (plan[i].kind == SliceKind::interval) representative[interval] = static_cast<int>(i);
-    if (plan[i].kind == SliceKind::intermediate && evaluate)
+    const bool evaluated = plan[i].kind == SliceKind::intermediate && rules.evaluate;
+    if (images.source[i] >= 0)
+      (plan[images.source[i]].kind == SliceKind::intermediate && rules.evaluate ? later_images
+                                                                                : first_images)
+          .push_back(i);
+    else if (evaluated)
       later[interval].push_back(i);
     else
       first.push_back(i);
   }
-  for_each_index_parallel(pair, first.size(), threads, [&](size_t k, Slicer& s) {
+  // On this thread: a mapped slice costs a copy, a few percent of one computed. A slice
+  // whose pieces lie along coincident contact segments names them by the lowest id, which a
+  // mapped slice, keeping its source's order, would not: those images are computed instead.
+  const auto map_images = [&](const std::vector<size_t>& which) {
+    std::vector<size_t> computed;
+    for (size_t i : which) {
+      const int source = images.source[i];
+      const int interval = plan[source].interval;
+      if (out[source].slice.coincident_pieces ||
+          (out[source].evaluated && out[representative[interval]].slice.coincident_pieces)) {
+        computed.push_back(i);
+        continue;
+      }
+      store(i, mapped_slice(out[source].slice, symmetries[images.symmetry[i]], plan[i].theta),
+            false);
+      out[i].mapped = true;
+    }
+    for_each_index_parallel(pair, computed.size(), rules.threads, [&](size_t k, Slicer& s) {
+      store(computed[k], s.slice(plan[computed[k]].theta), false);
+    });
+  };
+  for_each_index_parallel(pair, first.size(), rules.threads, [&](size_t k, Slicer& s) {
     store(first[k], s.slice(plan[first[k]].theta), false);
   });
-  for_each_index_parallel<SliceWorker>(pair, later.size(), threads, [&](size_t k, SliceWorker& w) {
-    if (later[k].empty()) return;
-    std::optional<BoundaryModel> model;
-    if (representative[k] >= 0) model = checked_model(pair, out[representative[k]].slice);
-    for (size_t i : later[k]) {
-      bool evaluated = false;
-      Slice slice = w.slice(model ? &*model : nullptr, plan[i].theta, evaluated);
-      store(i, std::move(slice), evaluated);
-    }
-    // Each interval writes its own representative's slot.
-    if (models && representative[k] >= 0) (*models)[representative[k]] = std::move(model);
-  });
+  map_images(first_images);
+  for_each_index_parallel<SliceWorker>(
+      pair, later.size(), rules.threads, [&](size_t k, SliceWorker& w) {
+        if (later[k].empty()) return;
+        std::optional<BoundaryModel> model;
+        if (representative[k] >= 0) model = checked_model(pair, out[representative[k]].slice);
+        for (size_t i : later[k]) {
+          bool evaluated = false;
+          Slice slice = w.slice(model ? &*model : nullptr, plan[i].theta, evaluated);
+          store(i, std::move(slice), evaluated);
+        }
+        // Each interval writes its own representative's slot.
+        if (models && representative[k] >= 0) (*models)[representative[k]] = std::move(model);
+      });
+  map_images(later_images);
   return out;
 }
 
@@ -258,9 +350,9 @@ SlicedSpace compute_space(const Pair& pair, const SpaceOptions& options) {
   space.reach = contact_reach(pair);
   space.max_step = interpolation_step(space.reach, pair.tol.contact);
   detail::KnownModels models;
-  space.slices =
-      detail::compute_slices(pair, detail::plan_slices(space.criticals, space.max_step),
-                             options.threads, options.evaluate_slices, options.progress, &models);
+  space.slices = detail::compute_slices(
+      pair, detail::plan_slices(space.criticals, space.max_step),
+      {options.threads, options.evaluate_slices, options.map_symmetric}, options.progress, &models);
   space.correspondence = detail::slice_correspondences(space.slices);
   report("topology", 0, 1);
   space.topology = detail::compute_topology(

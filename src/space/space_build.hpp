@@ -36,10 +36,16 @@ using KnownModels = std::vector<std::optional<std::optional<BoundaryModel>>>;
 // The slices at the planned orientations, in parallel (`threads` as in SpaceOptions), each
 // stored at its own index: the same whatever the thread count. Intermediate slices are
 // evaluated from their interval's representative (SpaceOptions::evaluate_slices) when
-// `evaluate`; the representatives' models go into `models` when given.
+// `evaluate`; slices at the image of another's orientation under a symmetry of the pair are
+// mapped from it when `map_symmetric`; the representatives' models go into `models` when
+// given.
+struct SliceRules {
+  int threads = 0;            // as in SpaceOptions
+  bool evaluate = true;       // SpaceOptions::evaluate_slices
+  bool map_symmetric = true;  // SpaceOptions::map_symmetric
+};
 std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<PlannedSlice>& plan,
-                                       int threads, bool evaluate,
-                                       const ProgressReport& progress = {},
+                                       const SliceRules& rules, const ProgressReport& progress = {},
                                        KnownModels* models = nullptr);
 
 // compute_topology, taking the side slices' models from `known` where they were built.

@@ -350,7 +350,7 @@ SlicedSpace read_space(const json& top, const Pair& pair, int threads) {
   // Everything the recomputation needs is known to be well formed; now the slices.
   // As compute_space: the side slices reuse the models built for the intermediate ones.
   detail::KnownModels models;
-  space.slices = detail::compute_slices(pair, plan, threads, true, {}, &models);
+  space.slices = detail::compute_slices(pair, plan, {threads, true, true}, {}, &models);
   for (size_t i = 0; i < stored.size(); ++i) check_slice(stored[i], i, space.slices[i], pair);
   space.correspondence = detail::slice_correspondences(space.slices);
   space.topology = detail::compute_topology(pair, space, {threads, false, true}, &models);

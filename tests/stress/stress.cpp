@@ -86,15 +86,18 @@ bool check_pair(const Pair& pair, unsigned seed, const std::string& name) {
   const size_t n = set.orientations.size(), step = std::max<size_t>(1, n / 40);
   for (size_t i = 0; i < n; i += step)
     testkit::check_slice_against_classify(pair, set.orientations[i].theta, 40, rng, name, false);
-  // Up to 20 slices evaluated from their interval's structure, evenly spread, against the
-  // same slices computed from scratch and beside their boundaries against classify.
-  std::vector<const SpaceSlice*> evaluated;
-  for (const SpaceSlice& s : space.slices)
-    if (s.evaluated) evaluated.push_back(&s);
-  for (size_t i = 0; i < evaluated.size(); i += std::max<size_t>(1, evaluated.size() / 20)) {
-    const Slice& s = evaluated[i]->slice;
-    testkit::expect_same_slice(pair, s, compute_slice(pair, s.theta), name);
-    testkit::expect_boundary_sides_agree_with_classify(pair, s, name);
+  // Up to 20 slices evaluated from their interval's structure and 20 mapped across a
+  // symmetry of the pair, evenly spread, against the same slices computed from scratch and
+  // beside their boundaries against classify.
+  for (const bool mapped : {false, true}) {
+    std::vector<const SpaceSlice*> made;
+    for (const SpaceSlice& s : space.slices)
+      if (mapped ? s.mapped : s.evaluated) made.push_back(&s);
+    for (size_t i = 0; i < made.size(); i += std::max<size_t>(1, made.size() / 20)) {
+      const Slice& s = made[i]->slice;
+      testkit::expect_same_slice(pair, s, compute_slice(pair, s.theta), name);
+      testkit::expect_boundary_sides_agree_with_classify(pair, s, name);
+    }
   }
   check_queries(pair, space, seed, name);
   check_mesh(pair, space, name);

@@ -72,12 +72,25 @@ std::vector<std::pair<SegmentLabel, SegmentLabel>> graph_labels(const Slice& s) 
   return out;
 }
 
+// The labels of the contact segments longer than the geometric epsilon, and of perfect fits,
+// sorted: contact segments of no length, where a feature's normal range only touches the
+// other's, come and go with round-off (a slice mapped across a symmetry of the pair has its
+// source's).
+std::vector<SegmentLabel> lengthy_labels(const Slice& s) {
+  std::vector<SegmentLabel> out;
+  for (const ContactSegment& c : s.contact_segments)
+    if (c.is_point || curve_length(c.curve) > s.epsilon)
+      out.push_back({c.moving_feature, c.fixed_feature});
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 }  // namespace
 
 void expect_same_slice(const Pair& pair, const Slice& evaluated, const Slice& computed,
                        const std::string& what) {
   ASSERT_EQ(evaluated.theta, computed.theta) << what;
-  EXPECT_EQ(evaluated.contact_segments.size(), computed.contact_segments.size()) << what;
+  EXPECT_EQ(lengthy_labels(evaluated), lengthy_labels(computed)) << what;
   ASSERT_EQ(evaluated.free_components.size(), computed.free_components.size()) << what;
   const double area_slack = pair.tol.geometric * pair.tol.size;
   for (const FreeComponent& c : evaluated.free_components) {

@@ -24,7 +24,7 @@ int check_slice_against_classify(const Pair& pair, const Slice& slice, int point
                                  bool sample_clearance = true);
 
 // A slice made another way (evaluated from a boundary model) against the slice computed from
-// scratch at its theta: the same contact segments, the free components matched through
+// scratch at its theta: the same contact segments (those of no length aside), the free components matched through
 // their samples both ways with the same boundedness and area, the same realizable labels,
 // contact graph (by label), degenerate contacts (by count) and blocked area. Pieces and
 // components may come in another order.

@@ -1,0 +1,215 @@
+// Symmetries of pairs (include/cslice/symmetry.hpp): found on the examples and on random
+// symmetric pairs, refused on a part drawn off its mirror, and the slices that compute_space
+// maps across them against the same slices computed from scratch and against classify.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "cslice/space.hpp"
+#include "cslice/symmetry.hpp"
+#include "support/examples.hpp"
+#include "support/moved_examples.hpp"
+#include "support/random_polygons.hpp"
+#include "support/slice_oracle.hpp"
+
+using namespace cslice;
+
+namespace {
+
+// The symmetries' actions on theta, as (quarter turns, reverses theta), sorted.
+std::set<std::pair<int, bool>> theta_maps(const Pair& pair) {
+  std::set<std::pair<int, bool>> out;
+  for (const PairSymmetry& s : pair_symmetries(pair))
+    out.insert({s.quarter_turns, s.reverses_theta});
+  return out;
+}
+
+// Each boundary cycle of each free component closes: every piece starts where the one before
+// it ends (a mirrored cycle whose pieces were reversed but not their order would not).
+void expect_cycles_chain(const Slice& slice, const std::string& what) {
+  for (const FreeComponent& c : slice.free_components)
+    for (const std::vector<ContactPiece>& cycle : c.boundary)
+      for (size_t i = 0; i < cycle.size(); ++i) {
+        const Curve& next = cycle[(i + 1) % cycle.size()].curve;
+        EXPECT_LE(distance(cycle[i].curve.to, next.from), slice.epsilon)
+            << what << ": component " << c.id << ", piece " << i << " does not meet the next";
+      }
+}
+
+// compute_space's mapped slices (up to `most`, evenly spread) against the slices computed at
+// their orientations, beside their boundaries and at random points against classify; the
+// space without mapping has the same topology. Returns how many slices were mapped.
+int check_mapped_slices(const Pair& pair, const std::string& name, size_t most = 16) {
+  SpaceOptions options;
+  options.threads = 2;
+  const SlicedSpace space = compute_space(pair, options);
+  options.map_symmetric = false;
+  const SlicedSpace plain = compute_space(pair, options);
+  EXPECT_EQ(space.slices.size(), plain.slices.size()) << name;
+  EXPECT_EQ(space.topology.components.size(), plain.topology.components.size()) << name;
+  EXPECT_EQ(space.topology.cells.size(), plain.topology.cells.size()) << name;
+  EXPECT_EQ(space.topology.slice_components, plain.topology.slice_components) << name;
+  std::vector<const SpaceSlice*> mapped;
+  for (const SpaceSlice& s : space.slices)
+    if (s.mapped) mapped.push_back(&s);
+  std::mt19937 rng(17);
+  for (size_t i = 0; i < mapped.size(); i += std::max<size_t>(1, mapped.size() / most)) {
+    const Slice& s = mapped[i]->slice;
+    const std::string what = name + " at theta " + std::to_string(s.theta);
+    const Slice computed = compute_slice(pair, s.theta);
+    testkit::expect_same_slice(pair, s, computed, what);
+    // Each component's boundary by the same labels: where pieces lie along coincident contact
+    // segments, naming them is the computed slice's rule, so such slices are not mapped.
+    for (const FreeComponent& c : s.free_components) {
+      const int match = computed.locate(c.sample);
+      if (match >= 0)
+        EXPECT_EQ(boundary_labels(s, c), boundary_labels(computed, computed.free_components[match]))
+            << what << ": component " << c.id;
+    }
+    testkit::expect_boundary_sides_agree_with_classify(pair, s, what);
+    testkit::check_slice_against_classify(pair, s, 100, rng, what, false);
+    expect_cycles_chain(s, what);
+  }
+  return static_cast<int>(mapped.size());
+}
+
+// A star around the origin symmetric under y -> -y: `k` vertices at angles in (0, pi), their
+// mirror images, and random bulges on the edges (a mirrored edge keeps its bulge, as the mirror
+// and the reversal of the loop both negate it).
+std::vector<std::array<double, 3>> mirror_star(std::mt19937& rng, int k, double r0, double r1) {
+  std::uniform_real_distribution<double> radius(r0, r1), jitter(-0.3, 0.3);
+  std::uniform_int_distribution<int> bulge(-1, 1);
+  std::vector<std::array<double, 3>> upper;
+  for (int i = 0; i < k; ++i) {
+    const double a = kPi * (i + 0.5 + jitter(rng)) / k, r = radius(rng);
+    upper.push_back({r * std::cos(a), r * std::sin(a), 0.1 * bulge(rng)});
+  }
+  // Counterclockwise: the lower half from angle -pi up, then the upper half.
+  std::vector<std::array<double, 3>> loop;
+  for (int i = k - 1; i >= 0; --i) {
+    // The edge from this image to the next one up mirrors the upper edge ending at vertex i.
+    const double b = i > 0 ? upper[i - 1][2] : 0.1 * bulge(rng);
+    loop.push_back({upper[i][0], -upper[i][1], b});
+  }
+  for (int i = 0; i < k; ++i) loop.push_back(upper[i]);
+  loop.back()[2] = 0.0;  // the edge across the axis at angle pi mirrors onto itself
+  return loop;
+}
+
+// A star around the origin symmetric under quarter turns: k vertices per quarter.
+std::vector<std::array<double, 3>> quarter_star(std::mt19937& rng, int k, double r0, double r1) {
+  std::uniform_real_distribution<double> radius(r0, r1), jitter(-0.3, 0.3);
+  std::uniform_int_distribution<int> bulge(-1, 1);
+  std::vector<std::array<double, 3>> quarter, loop;
+  for (int i = 0; i < k; ++i) {
+    const double a = 0.5 * kPi * (i + 0.5 + jitter(rng)) / k, r = radius(rng);
+    quarter.push_back({r * std::cos(a), r * std::sin(a), 0.1 * bulge(rng)});
+  }
+  for (int q = 0; q < 4; ++q)
+    for (const auto& v : quarter) {
+      const Vec2 p = QuarterMap{q, false}.apply({v[0], v[1]});
+      loop.push_back({p.x, p.y, v[2]});
+    }
+  return loop;
+}
+
+// The loop turned by `turns` quarter turns and moved to `centre` (by one rounded addition,
+// so the symmetry about the centre holds to round-off only).
+nlohmann::json placed_loop(const std::vector<std::array<double, 3>>& loop, int turns, Vec2 centre) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& v : loop) {
+    const Vec2 p = QuarterMap{turns, false}.apply({v[0], v[1]}) + centre;
+    out.push_back({p.x, p.y, v[2]});
+  }
+  return out;
+}
+
+Pair pair_of(const nlohmann::json& moving, const nlohmann::json& fixed, const std::string& name) {
+  nlohmann::json j;
+  j["name"] = name;
+  j["units"] = "mm";
+  j["moving"]["loops"] = nlohmann::json::array({moving});
+  j["fixed"]["loops"] = nlohmann::json::array({fixed});
+  return testkit::parse_or_throw(j.dump(), name);
+}
+
+}  // namespace
+
+TEST(Symmetry, ThePaperExamplesSymmetriesAreFound) {
+  using Maps = std::set<std::pair<int, bool>>;
+  // The knee's femur and tibia are not symmetric.
+  EXPECT_EQ(theta_maps(testkit::load_example("knee")), Maps{});
+  // The fixture's gripper is symmetric under both mirrors about its origin; its fixture under
+  // the mirror x -> 4.2 - x: theta -> -theta, pi - theta and theta + pi.
+  const Maps halves = {{0, true}, {2, false}, {2, true}};
+  EXPECT_EQ(theta_maps(testkit::load_example("fixture")), halves);
+  EXPECT_EQ(theta_maps(testkit::load_example("fastener")), halves);
+  // The cam: every quarter turn and mirror.
+  EXPECT_EQ(theta_maps(testkit::load_example("cam")),
+            (Maps{{1, false}, {2, false}, {3, false}, {0, true}, {1, true}, {2, true}, {3, true}}));
+  // Turned a quarter turn as a whole, the fixture keeps them.
+  EXPECT_EQ(theta_maps(testkit::moved_example("fixture", 1.0, kPi / 2, {0.0, 0.0})), halves);
+}
+
+TEST(Symmetry, APartDrawnOffItsMirrorIsNotSymmetric) {
+  std::ifstream in(testkit::example_path("fixture"));
+  nlohmann::json j = nlohmann::json::parse(in);
+  const Pair original = testkit::parse_or_throw(j.dump(), "fixture");
+  // One vertex of the fixed part moved by a geometric epsilon: the mirror is lost, the
+  // moving part's own symmetry (theta -> theta + pi) stays.
+  j["fixed"]["loops"][0][1][0] =
+      j["fixed"]["loops"][0][1][0].get<double>() + original.tol.geometric * 1.0;
+  const Pair moved = testkit::parse_or_throw(j.dump(), "fixture, one vertex moved");
+  EXPECT_EQ(theta_maps(moved), (std::set<std::pair<int, bool>>{{2, false}}));
+  // The symmetry's feature map is a permutation that keeps kinds.
+  for (const PairSymmetry& s : pair_symmetries(original)) {
+    std::vector<int> sorted = s.plane.feature_map;
+    std::sort(sorted.begin(), sorted.end());
+    for (size_t i = 0; i < sorted.size(); ++i) EXPECT_EQ(sorted[i], static_cast<int>(i));
+    for (size_t i = 0; i < s.plane.feature_map.size(); ++i)
+      EXPECT_EQ(original.fixed.features[i].kind,
+                original.fixed.features[s.plane.feature_map[i]].kind);
+  }
+}
+
+TEST(Symmetry, MappedSlicesOfTheExamplesAreTheSlicesAtTheirOrientations) {
+  for (const char* name : {"cam", "fixture", "fastener"})
+    EXPECT_GT(check_mapped_slices(testkit::load_example(name), name), 0) << name;
+  std::ifstream in(testkit::example_path("fixture"));
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const Pair moved = testkit::moved_pair(text, "fixture moved", 1.0, 0.0, {}, {30.0, -15.0});
+  EXPECT_GT(check_mapped_slices(moved, "fixture moved"), 0);
+  EXPECT_GT(check_mapped_slices(testkit::mirrored_example("fastener"), "fastener mirrored"), 0);
+}
+
+TEST(Symmetry, MappedSlicesOfRandomSymmetricPairsAreTheSlicesAtTheirOrientations) {
+  std::mt19937 rng(2026);
+  for (int k = 0; k < 4; ++k) {
+    // A fixed part symmetric under quarter turns about a point off the origin, a moving part
+    // under a mirror: theta -> theta + pi / 2, pi and 3 pi / 2.
+    const Vec2 centre{0.37 * k, -0.61};
+    const Pair turns = pair_of(placed_loop(mirror_star(rng, 4, 0.5, 1.0), 0, {}),
+                               placed_loop(quarter_star(rng, 3, 2.0, 3.0), 0, centre),
+                               "quarter turns " + std::to_string(k));
+    EXPECT_EQ(theta_maps(turns),
+              (std::set<std::pair<int, bool>>{{1, false}, {2, false}, {3, false}}));
+    EXPECT_GT(check_mapped_slices(turns, "quarter turns " + std::to_string(k), 8), 0);
+    // A fixed part symmetric under x -> 2 cx - x, a moving part under y -> -y: theta ->
+    // pi - theta.
+    const Pair mirrors = pair_of(placed_loop(mirror_star(rng, 4, 0.5, 1.0), 0, {}),
+                                 placed_loop(mirror_star(rng, 6, 2.0, 3.0), 1, centre),
+                                 "mirrors " + std::to_string(k));
+    EXPECT_EQ(theta_maps(mirrors), (std::set<std::pair<int, bool>>{{2, true}}));
+    EXPECT_GT(check_mapped_slices(mirrors, "mirrors " + std::to_string(k), 8), 0);
+  }
+}
