@@ -10,13 +10,17 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <random>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "cslice/critical.hpp"
 #include "cslice/space.hpp"
 #include "cslice/symmetry.hpp"
+#include "support/completeness.hpp"
 #include "support/examples.hpp"
 #include "support/moved_examples.hpp"
 #include "support/random_polygons.hpp"
@@ -46,15 +50,24 @@ void expect_cycles_chain(const Slice& slice, const std::string& what) {
       }
 }
 
+// What `compute` makes of the pair on two threads, with its options' map_symmetric on, then
+// off.
+template <class Options, class Result>
+std::pair<Result, Result> with_and_without_symmetry(const Pair& pair,
+                                                    Result (*compute)(const Pair&,
+                                                                      const Options&)) {
+  Options options;
+  options.threads = 2;
+  Result with = compute(pair, options);
+  options.map_symmetric = false;
+  return {std::move(with), compute(pair, options)};
+}
+
 // compute_space's mapped slices (up to `most`, evenly spread) against the slices computed at
 // their orientations, beside their boundaries and at random points against classify; the
 // space without mapping has the same topology. Returns how many slices were mapped.
 int check_mapped_slices(const Pair& pair, const std::string& name, size_t most = 16) {
-  SpaceOptions options;
-  options.threads = 2;
-  const SlicedSpace space = compute_space(pair, options);
-  options.map_symmetric = false;
-  const SlicedSpace plain = compute_space(pair, options);
+  const auto [space, plain] = with_and_without_symmetry(pair, compute_space);
   EXPECT_EQ(space.slices.size(), plain.slices.size()) << name;
   EXPECT_EQ(space.topology.components.size(), plain.topology.components.size()) << name;
   EXPECT_EQ(space.topology.cells.size(), plain.topology.cells.size()) << name;
@@ -143,6 +156,53 @@ Pair pair_of(const nlohmann::json& moving, const nlohmann::json& fixed, const st
   return testkit::parse_or_throw(j.dump(), name);
 }
 
+// The critical orientations found in the symmetries' fundamental domain and mapped: the same
+// orientations as searching the whole turn, each the exact image of another under every
+// symmetry, every criticality's image among the criticalities, and complete (no change of
+// the slices between two of them, none missed). Returns how many criticalities were mapped.
+long check_symmetric_criticals(const Pair& pair, const std::string& name) {
+  const auto [set, whole] = with_and_without_symmetry(pair, critical_orientations);
+  EXPECT_EQ(set.orientations.size(), whole.orientations.size()) << name;
+  for (size_t i = 0; i < set.orientations.size() && i < whole.orientations.size(); ++i)
+    EXPECT_NEAR(set.orientations[i].theta, whole.orientations[i].theta, pair.tol.critical_angle)
+        << name << ": orientation " << i;
+  std::vector<double> thetas;
+  std::vector<const Criticality*> all;
+  for (const CriticalOrientation& o : set.orientations) {
+    thetas.push_back(o.theta);
+    for (const Criticality& c : o.criticalities) all.push_back(&c);
+  }
+  for (const PairSymmetry& s : pair_symmetries(pair)) {
+    // To round-off of composing the maps: the slices at them are each other's images.
+    for (double theta : thetas)
+      EXPECT_EQ(std::count_if(thetas.begin(), thetas.end(),
+                              [&](double t) {
+                                return std::fabs(wrap_angle(t - s.image_theta(theta))) <=
+                                       64 * kTwoPi * std::numeric_limits<double>::epsilon();
+                              }),
+                1)
+          << name << ": no orientation at the image of " << theta;
+    for (const Criticality* c : all) {
+      const double theta = s.image_theta(c->theta);
+      const Vec2 at = s.plane.apply(c->at);
+      const bool found = std::any_of(all.begin(), all.end(), [&](const Criticality* d) {
+        return d->condition == c->condition && d->pairs.size() == c->pairs.size() &&
+               std::fabs(wrap_angle(d->theta - theta)) <= pair.tol.critical_angle &&
+               (c->condition == CriticalCondition::segment_end ||
+                distance(d->at, at) <= pair.tol.criticality);
+      });
+      EXPECT_TRUE(found) << name << ": no image of the criticality at " << c->theta;
+    }
+  }
+  testkit::CompletenessOptions few;
+  few.samples_per_interval = 8;
+  few.dense_samples = 240;
+  const testkit::CompletenessReport report = testkit::check_completeness(pair, set, few);
+  for (const std::string& f : report.interval_failures) ADD_FAILURE() << name << ": " << f;
+  for (const std::string& m : report.missed) ADD_FAILURE() << name << ": " << m;
+  return set.stats.mapped;
+}
+
 }  // namespace
 
 TEST(Symmetry, ThePaperExamplesSymmetriesAreFound) {
@@ -211,5 +271,28 @@ TEST(Symmetry, MappedSlicesOfRandomSymmetricPairsAreTheSlicesAtTheirOrientations
                                  "mirrors " + std::to_string(k));
     EXPECT_EQ(theta_maps(mirrors), (std::set<std::pair<int, bool>>{{2, true}}));
     EXPECT_GT(check_mapped_slices(mirrors, "mirrors " + std::to_string(k), 8), 0);
+  }
+}
+
+TEST(Symmetry, CriticalOrientationsFromTheFundamentalDomainAreThoseOfTheWholeTurn) {
+  for (const char* name : {"cam", "fixture", "fastener"})
+    EXPECT_GT(check_symmetric_criticals(testkit::load_example(name), name), 0) << name;
+  EXPECT_EQ(check_symmetric_criticals(testkit::load_example("knee"), "knee"), 0);
+  EXPECT_GT(check_symmetric_criticals(testkit::mirrored_example("fixture"), "fixture mirrored"), 0);
+  std::mt19937 rng(77);
+  for (int k = 0; k < 3; ++k) {
+    const Vec2 centre{-0.23 * k, 0.41};
+    const std::string turns = "quarter turns " + std::to_string(k);
+    EXPECT_GT(check_symmetric_criticals(
+                  pair_of(placed_loop(mirror_star(rng, 4, 0.5, 1.0), 0, {}),
+                          placed_loop(quarter_star(rng, 3, 2.0, 3.0), 0, centre), turns),
+                  turns),
+              0);
+    const std::string mirrors = "mirrors " + std::to_string(k);
+    EXPECT_GT(check_symmetric_criticals(
+                  pair_of(placed_loop(mirror_star(rng, 4, 0.5, 1.0), 0, {}),
+                          placed_loop(mirror_star(rng, 6, 2.0, 3.0), 1, centre), mirrors),
+                  mirrors),
+              0);
   }
 }

@@ -52,6 +52,10 @@ struct CriticalOptions {
   // Threads at once (oneTBB); 0 lets oneTBB choose (every core). The result is the same
   // whatever the count.
   int threads = 0;
+  // For a pair with symmetries (include/cslice/symmetry.hpp), search only a fundamental
+  // domain of theta and add the images of what is found there (docs/symmetry.md); false
+  // searches the whole turn (the tests compare the two).
+  bool map_symmetric = true;
 };
 
 struct CriticalStats {
@@ -64,6 +68,8 @@ struct CriticalStats {
                                 // its contact segments, or a triple at a segment's end
   long long blocked = 0;        // dropped by screening
   long long criticalities = 0;  // kept
+  long long mapped = 0;         // of those, images of others under the pair's symmetries (the
+                                // counts above but this one are of the searched domain)
 };
 
 struct CriticalSet {

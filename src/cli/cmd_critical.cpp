@@ -1,5 +1,5 @@
-// `cslice critical PAIR.json [--json OUT] [--unscreened]`: the critical orientations of a pair, as
-// a table with a summary of counts by condition, or as JSON (docs/criticals.md).
+// `cslice critical PAIR.json [--json OUT] [--unscreened] [--whole-turn]`: the critical orientations
+// of a pair, as a table with a summary of counts by condition, or as JSON (docs/criticals.md).
 #include <chrono>
 #include <iostream>
 #include <memory>
@@ -16,6 +16,7 @@ struct CriticalCommand {
   std::string pair_path;
   std::string json_path;
   bool unscreened = false;
+  bool whole_turn = false;
 };
 
 std::string pair_words(const Pair& pair, const FeaturePairRef& p) {
@@ -46,6 +47,7 @@ std::string table_text(const Pair& pair, const CriticalSet& set, double millisec
   out += summary_row("roots", 22, std::to_string(set.stats.roots));
   out += summary_row("  culled", 22, std::to_string(set.stats.culled));
   out += summary_row("  off their segments", 22, std::to_string(set.stats.off_segment));
+  out += summary_row("mapped by symmetry", 22, std::to_string(set.stats.mapped));
   out += summary_row("time", 22, format_number(milliseconds) + " ms");
   return out;
 }
@@ -54,6 +56,7 @@ void run(const CriticalCommand& cmd) {
   const Pair pair = load_pair_or_exit(cmd.pair_path);
   CriticalOptions options;
   options.screen_blocked = !cmd.unscreened;
+  options.map_symmetric = !cmd.whole_turn;
   const auto start = std::chrono::steady_clock::now();
   const CriticalSet set = critical_orientations(pair, options);
   const double ms =
@@ -78,6 +81,9 @@ void register_critical(CLI::App& app) {
                   "Write them as JSON (docs/criticals.md); - for standard output");
   sub->add_flag("--unscreened", cmd->unscreened,
                 "Keep criticalities that happen only in blocked space");
+  sub->add_flag("--whole-turn", cmd->whole_turn,
+                "Search every orientation, even those a symmetry of the pair maps from others\n"
+                "(docs/symmetry.md; slower, the same critical orientations)");
   sub->callback([cmd] { run(*cmd); });
 }
 

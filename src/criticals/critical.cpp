@@ -28,6 +28,7 @@
 #include "criticals/bucket_sort.hpp"
 #include "criticals/candidates.hpp"
 #include "criticals/events.hpp"
+#include "criticals/symmetric.hpp"
 #include "cslice/classify.hpp"
 #include "cslice/critical.hpp"
 
@@ -83,6 +84,14 @@ struct Context {
         binning(std::clamp(int(families.size()) / 8, 32, 1 << 12)),
         alive(alive_families_by_bin(families, binning)) {
     for (const ContactFamily& f : families) equations.push_back(family_equation(f));
+    if (o.map_symmetric) {
+      symmetries = pair_symmetries(p);
+      domain = fundamental_domain(symmetries);
+      if (!domain) symmetries.clear();
+      for (size_t i = 0; domain && i < families.size(); ++i)
+        family_by_features.push_back({features_of(families[i]), int(i)});
+      std::sort(family_by_features.begin(), family_by_features.end());
+    }
     size_t total = 0;
     for (const std::vector<int>& bin : alive) total += bin.size();
     if (total <= kKeptEntries) kept_entries.resize(size_t(binning.count));
@@ -105,6 +114,15 @@ struct Context {
     return bin_entries(families, alive[bin], binning, bin, pair.tol.criticality);
   }
 
+  // With symmetries, only orientations of their fundamental domain (grown by the critical
+  // angle) are searched: the images of what is found there are the rest.
+  bool in_domain(double theta) const {
+    return !domain || domain->contains(theta, pair.tol.critical_angle);
+  }
+  bool bin_in_domain(int bin) const {
+    return !domain || domain->overlaps(binning.lower(bin), binning.width, pair.tol.critical_angle);
+  }
+
   BinScope scope(int bin) const {
     return {&families, binning, bin, pair.tol.criticality, pair.tol.geometric, pair.tol.size};
   }
@@ -116,7 +134,13 @@ struct Context {
   std::vector<ContactFamily> families;
   std::vector<FamilyEquation> equations;
   Binning binning;
-  std::vector<std::vector<int>> alive;  // per bin
+  std::vector<std::vector<int>> alive;   // per bin
+  std::vector<PairSymmetry> symmetries;  // empty unless options.map_symmetric and a domain
+  std::optional<ThetaDomain> domain;
+  // With a domain, the families by their features and kind: an image's family.
+  using Features = std::array<int, 3>;
+  static Features features_of(const ContactFamily& f) { return {f.moving, f.fixed, int(f.kind)}; }
+  std::vector<std::pair<Features, int>> family_by_features;
   // Per bin, its entries as the meeting pass built them (empty when not kept: see
   // kKeptEntries). Each bin's slot is written by the one task meeting it, then only read.
   std::vector<std::vector<BinEntry>> kept_entries;
@@ -509,7 +533,12 @@ class CriticalFinder {
     for (size_t i = 0; i < found.size(); ++i)
       if (keep[i]) kept_.push_back(criticality(found[i]));
     set_.stats.blocked = long(found.size() - kept_.size());
+    if (ctx_.domain)
+      set_.stats.mapped =
+          add_symmetric_images(kept_, ctx_.symmetries, ctx_.pair.tol,
+                               [this](const Criticality& c) { return segment_end_at(c); });
     group();
+    if (ctx_.domain) align_symmetric_orientations(set_, ctx_.symmetries, ctx_.pair.tol);
     return std::move(set_);
   }
 
@@ -528,6 +557,7 @@ class CriticalFinder {
     for (int first = 0; first < ctx_.binning.count; first += kBlock) {
       tbb::enumerable_thread_specific<Found> per_thread;
       tbb::parallel_for(first, std::min(first + kBlock, ctx_.binning.count), [&](int b) {
+        if (!ctx_.bin_in_domain(b)) return;
         Found& f = per_thread.local();
         std::vector<BinEntry> entries = ctx_.entries(b);
         meeting_candidates(entries, ctx_.scope(b), f.pairs, f.triples);
@@ -576,11 +606,12 @@ class CriticalFinder {
   void add_switches(std::vector<Candidate>& found) const {
     for (size_t i = 0; i < ctx_.families.size(); ++i)
       for (double theta : ctx_.families[i].switches)
-        found.push_back({CriticalCondition::segment_end,
-                         {int(i), -1, -1},
-                         1,
-                         theta,
-                         ctx_.families[i].ends.front().at(theta)});
+        if (ctx_.in_domain(theta))
+          found.push_back({CriticalCondition::segment_end,
+                           {int(i), -1, -1},
+                           1,
+                           theta,
+                           ctx_.families[i].ends.front().at(theta)});
   }
 
   // Pass 3: which candidates (sorted) to keep.
@@ -635,6 +666,16 @@ class CriticalFinder {
     set_.stats.roots += s.roots;
     set_.stats.culled += s.culled;
     set_.stats.off_segment += s.off_segment;
+  }
+
+  // Where a segment_end criticality of these features happens (add_switches).
+  Vec2 segment_end_at(const Criticality& c) const {
+    const FeaturePairRef& p = c.pairs.front();
+    const Context::Features key{p.moving_feature, p.fixed_feature, int(p.kind)};
+    const auto& index = ctx_.family_by_features;
+    const auto it = std::lower_bound(index.begin(), index.end(), std::pair{key, -1});
+    if (it == index.end() || it->first != key) return c.at;
+    return ctx_.families[size_t(it->second)].ends.front().at(c.theta);
   }
 
   Criticality criticality(const Candidate& c) const {

@@ -64,7 +64,8 @@ std::string critical_set_to_json(const Pair& pair, const CriticalSet& set) {
                 {"culled", s.culled},
                 {"off_segment", s.off_segment},
                 {"blocked", s.blocked},
-                {"criticalities", s.criticalities}};
+                {"criticalities", s.criticalities},
+                {"mapped", s.mapped}};
   json out = {{"format", "cslice-critical"}, {"version", 1},     {"pair", pair.name},
               {"critical", critical},        {"counts", counts}, {"stats", stats}};
   return out.dump(1) + "\n";

@@ -1,0 +1,198 @@
+// Critical orientations of a symmetric pair (src/criticals/symmetric.hpp).
+#include "criticals/symmetric.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iterator>
+
+namespace cslice {
+
+namespace {
+
+// The counterclockwise turn from `from` to theta, in [0, 2 pi).
+double turn_from(double from, double theta) {
+  double t = fmod_two_pi(theta - from);
+  if (t < 0.0) t += kTwoPi;
+  return t;
+}
+
+// A criticality's identity up to round-off: its condition, then its feature pairs as
+// (moving, fixed, kind), in order for an endpoint (its first pair owns the end) and sorted
+// otherwise, unused places -1.
+using Identity = std::array<int, 10>;
+
+Identity identity_of(const Criticality& c) {
+  std::array<std::array<int, 3>, 3> pairs;
+  pairs.fill({-1, -1, -1});
+  for (size_t i = 0; i < c.pairs.size() && i < 3; ++i)
+    pairs[i] = {c.pairs[i].moving_feature, c.pairs[i].fixed_feature, int(c.pairs[i].kind)};
+  if (c.condition != CriticalCondition::endpoint)
+    std::sort(pairs.begin(), pairs.begin() + std::min<size_t>(c.pairs.size(), 3));
+  Identity id;
+  id[0] = int(c.condition);
+  for (int i = 0; i < 9; ++i) id[size_t(1 + i)] = pairs[size_t(i / 3)][size_t(i % 3)];
+  return id;
+}
+
+Criticality image_of(const Criticality& c, const PairSymmetry& s, const SegmentEndPoint& at) {
+  Criticality image = c;
+  image.theta = s.image_theta(c.theta);
+  image.at = s.plane.apply(c.at);
+  for (FeaturePairRef& p : image.pairs) {
+    p.moving_feature = s.moving_map[p.moving_feature];
+    p.fixed_feature = s.plane.feature_map[p.fixed_feature];
+  }
+  // A segment's end is given by its family's first end, which a mirror makes the last.
+  if (c.condition == CriticalCondition::segment_end) image.at = at(image);
+  return image;
+}
+
+// The criticalities found directly, by identity, for finding one at an image.
+class Found {
+ public:
+  Found(const std::vector<Criticality>& kept, const Tolerances& tol) : kept_(kept), tol_(tol) {
+    for (size_t i = 0; i < kept.size(); ++i) by_id_.push_back({identity_of(kept[i]), int(i)});
+    std::sort(by_id_.begin(), by_id_.end());
+  }
+
+  // The first criticality found that c (of identity id) repeats, or -1.
+  int find(const Identity& id, const Criticality& c) const {
+    auto it = std::lower_bound(by_id_.begin(), by_id_.end(), std::pair{id, -1});
+    for (; it != by_id_.end() && it->first == id; ++it)
+      if (same_place(kept_[size_t(it->second)], c)) return it->second;
+    return -1;
+  }
+
+  bool same_place(const Criticality& a, const Criticality& b) const {
+    return std::fabs(wrap_angle(a.theta - b.theta)) <= tol_.critical_angle &&
+           distance(a.at, b.at) <= tol_.criticality;
+  }
+
+ private:
+  const std::vector<Criticality>& kept_;
+  const Tolerances& tol_;
+  std::vector<std::pair<Identity, int>> by_id_;
+};
+
+struct Image {
+  Criticality criticality;
+  Identity id;
+  int found = -1;  // the criticality found directly that it repeats, or -1
+};
+
+}  // namespace
+
+bool ThetaDomain::contains(double theta, double slack) const {
+  return turn_from(lo - slack, theta) <= length + 2.0 * slack;
+}
+
+bool ThetaDomain::overlaps(double from, double width, double slack) const {
+  // The bin starts inside the grown arc, or the arc starts inside the bin.
+  return contains(from, slack) || turn_from(from, lo - slack) <= width;
+}
+
+std::optional<ThetaDomain> fundamental_domain(const std::vector<PairSymmetry>& symmetries) {
+  if (symmetries.empty()) return std::nullopt;
+  bool turns[4] = {true, false, false, false};
+  int mirror = -1;  // the least c of a mirror theta -> c pi / 2 - theta
+  int mirrors = 0;
+  for (const PairSymmetry& s : symmetries) {
+    if (s.reverses_theta) {
+      ++mirrors;
+      if (mirror < 0 || s.quarter_turns < mirror) mirror = s.quarter_turns;
+    } else {
+      turns[s.quarter_turns] = true;
+    }
+  }
+  const int count = int(std::count(std::begin(turns), std::end(turns), true));
+  // The turns must be a subgroup of the quarter turns: none, the half turn, or all four.
+  if (count == 3 || (count == 2 && !turns[2])) return std::nullopt;
+  if (mirror >= 0 && mirrors != count) return std::nullopt;  // one mirror per turn
+  const double period = kTwoPi / count;
+  if (mirror < 0) return ThetaDomain{-kPi, period};
+  return ThetaDomain{wrap_angle(mirror * (kPi / 4)), period / 2};
+}
+
+long add_symmetric_images(std::vector<Criticality>& kept,
+                          const std::vector<PairSymmetry>& symmetries, const Tolerances& tol,
+                          const SegmentEndPoint& segment_end_at) {
+  const size_t originals = kept.size(), n = symmetries.size();
+  const Found found(kept, tol);
+  // Every image, and the criticality found directly that it repeats.
+  std::vector<Image> images(originals * n);
+  for (size_t i = 0; i < originals; ++i)
+    for (size_t s = 0; s < n; ++s) {
+      Image& m = images[i * n + s];
+      m.criticality = image_of(kept[i], symmetries[s], segment_end_at);
+      m.id = identity_of(m.criticality);
+      m.found = found.find(m.id, m.criticality);
+    }
+  // Found criticalities that repeat one another (two equations finding one event) form a
+  // class, named by its first member. A class is the image of an earlier one when found at
+  // an image directly (a mirror's two sides of theta = 0, say); only the others, the
+  // representatives, have their images added.
+  std::vector<int> class_of(originals);
+  for (size_t i = 0; i < originals; ++i) class_of[i] = found.find(identity_of(kept[i]), kept[i]);
+  std::vector<char> represents(originals, true);
+  for (size_t i = 0; i < originals; ++i) {
+    if (class_of[i] != int(i) || !represents[i]) continue;
+    for (size_t s = 0; s < n; ++s) {
+      const int j = images[i * n + s].found;
+      if (j >= 0 && class_of[size_t(j)] != int(i)) represents[size_t(class_of[size_t(j)])] = false;
+    }
+  }
+  const size_t before = kept.size();
+  for (size_t i = 0; i < originals; ++i) {
+    if (!represents[size_t(class_of[i])]) continue;
+    for (size_t s = 0; s < n; ++s) {
+      Image& m = images[i * n + s];
+      // Found directly (or the criticality itself, on a mirror's axis), or already an image
+      // of this one under another symmetry.
+      if (m.found >= 0) continue;
+      const auto same = [&](size_t t) {
+        return images[i * n + t].id == m.id &&
+               found.same_place(images[i * n + t].criticality, m.criticality);
+      };
+      bool repeated = false;
+      for (size_t t = 0; t < s && !repeated; ++t) repeated = images[i * n + t].found < 0 && same(t);
+      if (!repeated) kept.push_back(m.criticality);
+    }
+  }
+  return long(kept.size() - before);
+}
+
+void align_symmetric_orientations(CriticalSet& set, const std::vector<PairSymmetry>& symmetries,
+                                  const Tolerances& tol) {
+  std::vector<CriticalOrientation>& o = set.orientations;  // sorted by theta
+  const int n = int(o.size());
+  std::vector<char> aligned(o.size(), false);
+  // The orientation within the critical angle of theta (either neighbour of where it would
+  // go, round through theta = +-pi), or -1.
+  const auto near = [&](double theta) {
+    const auto it =
+        std::lower_bound(o.begin(), o.end(), theta,
+                         [](const CriticalOrientation& c, double t) { return c.theta < t; });
+    const int at = int(it - o.begin());
+    for (int j : {at % n, (at + n - 1) % n})
+      if (std::fabs(wrap_angle(o[j].theta - theta)) <= tol.critical_angle) return j;
+    return -1;
+  };
+  std::vector<std::pair<int, double>> moves;  // applied after the searches, which need order
+  for (int i = 0; i < n; ++i) {
+    if (aligned[i]) continue;
+    for (const PairSymmetry& s : symmetries) {
+      const double image = s.image_theta(o[i].theta);
+      const int j = near(image);
+      if (j > i && !aligned[j]) {
+        moves.push_back({j, image});
+        aligned[j] = true;
+      }
+    }
+  }
+  for (const auto& [j, theta] : moves) o[j].theta = theta;
+  std::stable_sort(o.begin(), o.end(),
+                   [](const auto& a, const auto& b) { return a.theta < b.theta; });
+}
+
+}  // namespace cslice
