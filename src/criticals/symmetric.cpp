@@ -21,63 +21,96 @@ double turn_from(double from, double theta) {
 // (moving, fixed, kind), in order for an endpoint (its first pair owns the end) and sorted
 // otherwise, unused places -1.
 using Identity = std::array<int, 10>;
+using PairKeys = std::array<std::array<int, 3>, 3>;  // (moving, fixed, kind), -1 unused
 
-Identity identity_of(const Criticality& c) {
-  std::array<std::array<int, 3>, 3> pairs;
-  pairs.fill({-1, -1, -1});
-  for (size_t i = 0; i < c.pairs.size() && i < 3; ++i)
-    pairs[i] = {c.pairs[i].moving_feature, c.pairs[i].fixed_feature, int(c.pairs[i].kind)};
-  if (c.condition != CriticalCondition::endpoint)
-    std::sort(pairs.begin(), pairs.begin() + std::min<size_t>(c.pairs.size(), 3));
+Identity identity_of(CriticalCondition condition, PairKeys pairs, size_t count) {
+  if (condition != CriticalCondition::endpoint)
+    std::sort(pairs.begin(), pairs.begin() + long(std::min<size_t>(count, 3)));
   Identity id;
-  id[0] = int(c.condition);
+  id[0] = int(condition);
   for (int i = 0; i < 9; ++i) id[size_t(1 + i)] = pairs[size_t(i / 3)][size_t(i % 3)];
   return id;
 }
 
-Criticality image_of(const Criticality& c, const PairSymmetry& s, const SegmentEndPoint& at) {
+// The feature pairs of c, mapped by s when given.
+PairKeys pair_keys(const Criticality& c, const PairSymmetry* s) {
+  PairKeys keys;
+  keys.fill({-1, -1, -1});
+  for (size_t i = 0; i < c.pairs.size() && i < 3; ++i) {
+    const FeaturePairRef& p = c.pairs[i];
+    keys[i] = {s ? s->moving_map[p.moving_feature] : p.moving_feature,
+               s ? s->plane.feature_map[p.fixed_feature] : p.fixed_feature, int(p.kind)};
+  }
+  return keys;
+}
+
+Identity identity_of(const Criticality& c) {
+  return identity_of(c.condition, pair_keys(c, nullptr), c.pairs.size());
+}
+
+// Where and what a criticality is, without its list of pairs: enough to compare.
+struct Place {
+  Identity id;
+  double theta = 0.0;
+  Vec2 at;
+};
+
+// The image of c under s. A segment's end is given by its family's first end, which a mirror
+// makes the last: its point is its image family's own.
+Place image_place(const Criticality& c, const PairSymmetry& s, const SegmentEndPoint& end_at) {
+  const PairKeys keys = pair_keys(c, &s);
+  Place p{identity_of(c.condition, keys, c.pairs.size()), s.image_theta(c.theta),
+          s.plane.apply(c.at)};
+  if (c.condition == CriticalCondition::segment_end)
+    p.at = end_at({keys[0][0], keys[0][1], c.pairs.front().kind}, p.theta);
+  return p;
+}
+
+Criticality image_of(const Criticality& c, const PairSymmetry& s, const Place& place) {
   Criticality image = c;
-  image.theta = s.image_theta(c.theta);
-  image.at = s.plane.apply(c.at);
+  image.theta = place.theta;
+  image.at = place.at;
   for (FeaturePairRef& p : image.pairs) {
     p.moving_feature = s.moving_map[p.moving_feature];
     p.fixed_feature = s.plane.feature_map[p.fixed_feature];
   }
-  // A segment's end is given by its family's first end, which a mirror makes the last.
-  if (c.condition == CriticalCondition::segment_end) image.at = at(image);
   return image;
 }
 
 // The criticalities found directly, by identity, for finding one at an image.
 class Found {
  public:
-  Found(const std::vector<Criticality>& kept, const Tolerances& tol) : kept_(kept), tol_(tol) {
-    for (size_t i = 0; i < kept.size(); ++i) by_id_.push_back({identity_of(kept[i]), int(i)});
+  Found(const std::vector<Criticality>& kept, const Tolerances& tol) : tol_(tol) {
+    for (size_t i = 0; i < kept.size(); ++i) {
+      places_.push_back({identity_of(kept[i]), kept[i].theta, kept[i].at});
+      by_id_.push_back({places_.back().id, int(i)});
+    }
     std::sort(by_id_.begin(), by_id_.end());
   }
 
-  // The first criticality found that c (of identity id) repeats, or -1.
-  int find(const Identity& id, const Criticality& c) const {
-    auto it = std::lower_bound(by_id_.begin(), by_id_.end(), std::pair{id, -1});
-    for (; it != by_id_.end() && it->first == id; ++it)
-      if (same_place(kept_[size_t(it->second)], c)) return it->second;
+  const Place& place(size_t i) const { return places_[i]; }
+
+  // The first criticality found that p repeats, or -1.
+  int find(const Place& p) const {
+    auto it = std::lower_bound(by_id_.begin(), by_id_.end(), std::pair{p.id, -1});
+    for (; it != by_id_.end() && it->first == p.id; ++it)
+      if (same(places_[size_t(it->second)], p)) return it->second;
     return -1;
   }
 
-  bool same_place(const Criticality& a, const Criticality& b) const {
-    return std::fabs(wrap_angle(a.theta - b.theta)) <= tol_.critical_angle &&
+  bool same(const Place& a, const Place& b) const {
+    return a.id == b.id && std::fabs(wrap_angle(a.theta - b.theta)) <= tol_.critical_angle &&
            distance(a.at, b.at) <= tol_.criticality;
   }
 
  private:
-  const std::vector<Criticality>& kept_;
   const Tolerances& tol_;
+  std::vector<Place> places_;
   std::vector<std::pair<Identity, int>> by_id_;
 };
 
 struct Image {
-  Criticality criticality;
-  Identity id;
+  Place place;
   int found = -1;  // the criticality found directly that it repeats, or -1
 };
 
@@ -124,16 +157,15 @@ long add_symmetric_images(std::vector<Criticality>& kept,
   for (size_t i = 0; i < originals; ++i)
     for (size_t s = 0; s < n; ++s) {
       Image& m = images[i * n + s];
-      m.criticality = image_of(kept[i], symmetries[s], segment_end_at);
-      m.id = identity_of(m.criticality);
-      m.found = found.find(m.id, m.criticality);
+      m.place = image_place(kept[i], symmetries[s], segment_end_at);
+      m.found = found.find(m.place);
     }
   // Found criticalities that repeat one another (two equations finding one event) form a
   // class, named by its first member. A class is the image of an earlier one when found at
   // an image directly (a mirror's two sides of theta = 0, say); only the others, the
   // representatives, have their images added.
   std::vector<int> class_of(originals);
-  for (size_t i = 0; i < originals; ++i) class_of[i] = found.find(identity_of(kept[i]), kept[i]);
+  for (size_t i = 0; i < originals; ++i) class_of[i] = found.find(found.place(i));
   std::vector<char> represents(originals, true);
   for (size_t i = 0; i < originals; ++i) {
     if (class_of[i] != int(i) || !represents[i]) continue;
@@ -146,17 +178,14 @@ long add_symmetric_images(std::vector<Criticality>& kept,
   for (size_t i = 0; i < originals; ++i) {
     if (!represents[size_t(class_of[i])]) continue;
     for (size_t s = 0; s < n; ++s) {
-      Image& m = images[i * n + s];
+      const Image& m = images[i * n + s];
       // Found directly (or the criticality itself, on a mirror's axis), or already an image
       // of this one under another symmetry.
       if (m.found >= 0) continue;
-      const auto same = [&](size_t t) {
-        return images[i * n + t].id == m.id &&
-               found.same_place(images[i * n + t].criticality, m.criticality);
-      };
       bool repeated = false;
-      for (size_t t = 0; t < s && !repeated; ++t) repeated = images[i * n + t].found < 0 && same(t);
-      if (!repeated) kept.push_back(m.criticality);
+      for (size_t t = 0; t < s && !repeated; ++t)
+        repeated = images[i * n + t].found < 0 && found.same(images[i * n + t].place, m.place);
+      if (!repeated) kept.push_back(image_of(kept[i], symmetries[s], m.place));
     }
   }
   return long(kept.size() - before);

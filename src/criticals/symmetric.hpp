@@ -31,8 +31,8 @@ struct ThetaDomain {
 // there are none.
 std::optional<ThetaDomain> fundamental_domain(const std::vector<PairSymmetry>& symmetries);
 
-// Where a segment_end criticality happens: its family's first end at its theta.
-using SegmentEndPoint = std::function<Vec2(const Criticality&)>;
+// Where a segment_end criticality of these features happens: its family's first end at theta.
+using SegmentEndPoint = std::function<Vec2(const FeaturePairRef&, double theta)>;
 
 // Adds to `kept` (the criticalities found in the fundamental domain, grown a little) the
 // images of its criticalities under every symmetry, except those found directly: a
