@@ -27,7 +27,7 @@ constexpr int kMaxSteps = 5000;
 
 }  // namespace
 
-int carry_finely(const Pair& pair, Vec2 p, double from, double to) {
+int carry_finely(const Pair& pair, Vec2 p, double from, double to, Vec2* landed) {
   Slicer slicer(pair);
   const double reach = moving_reach(pair.moving);
   Slice slice = slicer.slice(wrap_angle(from));
@@ -39,6 +39,7 @@ int carry_finely(const Pair& pair, Vec2 p, double from, double to) {
     const double next = to < theta ? std::max(to, theta - step) : std::min(to, theta + step);
     slice = slicer.slice(wrap_angle(next));
     const int c = slice.locate(p);
+    if (c >= 0 && landed) *landed = slice.free_components[c].sample;
     if (c < 0 || next == to) return c;
     p = slice.free_components[c].sample;
     theta = next;
@@ -62,8 +63,14 @@ Crossing carry_across(const Pair& pair, const SlicedSpace& space, int at, bool f
   const SpaceSlice &a = space.slices[x.from], &b = space.slices[x.to];
   const double target = a.theta + wrap_angle(b.theta - a.theta);
   for (const FreeComponent& c : a.slice.free_components) {
-    const int land = carry_finely(pair, c.sample, a.theta, target);
-    if (land >= 0) x.landed.emplace_back(c.id, land);  // else it vanishes at the critical
+    Vec2 at;
+    if (carry_finely(pair, c.sample, a.theta, target, &at) < 0) continue;  // vanishes there
+    // The stored slice's own component there: one mapped across a symmetry of the pair lists
+    // its components in its source's order, not the computed slice's.
+    const int land = b.slice.locate(at);
+    EXPECT_GE(land, 0) << "the sample where component " << c.id << " of the slice at " << a.theta
+                       << " lands is not free in the stored slice at " << b.theta;
+    if (land >= 0) x.landed.emplace_back(c.id, land);
   }
   return x;
 }

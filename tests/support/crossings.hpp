@@ -15,8 +15,10 @@ namespace cslice::testkit {
 // most the moving part's reach per radian, cannot cover p's clearance in its slice less the
 // slice's epsilon; within each slice p moves to its component's sample (a free path there).
 // Returns the component of the slice at `to` where it lands, -1 where it leaves free space or
-// a step gets shorter than the angular tolerance (a component shrinking to nothing).
-int carry_finely(const Pair& pair, Vec2 p, double from, double to);
+// a step gets shorter than the angular tolerance (a component shrinking to nothing); with
+// `landed`, that component's sample (to find it in a slice made another way, whose
+// components may come in another order).
+int carry_finely(const Pair& pair, Vec2 p, double from, double to, Vec2* landed = nullptr);
 
 // Carries every free component of the stored slice next to critical slice `at` (after it when
 // from_after, else before it, cyclically) across to the stored slice on the other side, and
