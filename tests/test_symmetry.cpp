@@ -20,6 +20,7 @@
 #include "cslice/critical.hpp"
 #include "cslice/space.hpp"
 #include "cslice/symmetry.hpp"
+#include "support/cli_run.hpp"
 #include "support/completeness.hpp"
 #include "support/examples.hpp"
 #include "support/moved_examples.hpp"
@@ -294,5 +295,30 @@ TEST(Symmetry, CriticalOrientationsFromTheFundamentalDomainAreThoseOfTheWholeTur
                           placed_loop(mirror_star(rng, 6, 2.0, 3.0), 1, centre), mirrors),
                   mirrors),
               0);
+  }
+}
+
+class SymmetryCli : public testkit::ScratchDirTest {
+ protected:
+  SymmetryCli() : ScratchDirTest("cslice_symmetry") {}
+};
+
+// `cslice info` names what each symmetry does to theta; `cslice critical --whole-turn` finds
+// the same orientations without them.
+TEST_F(SymmetryCli, InfoNamesTheSymmetriesAndCriticalCanSearchTheWholeTurn) {
+  const std::string fixture = testkit::quoted(testkit::example_path("fixture"));
+  const testkit::RunResult info = testkit::run_cli("info --json " + fixture, dir_);
+  ASSERT_EQ(info.status, 0) << info.err;
+  EXPECT_EQ(nlohmann::json::parse(info.out)["symmetries"],
+            nlohmann::json({"theta + pi", "pi - theta", "-theta"}));
+  const testkit::RunResult knee =
+      testkit::run_cli("info " + testkit::quoted(testkit::example_path("knee")), dir_);
+  EXPECT_NE(knee.out.find("symmetry   none"), std::string::npos) << knee.out;
+  for (const char* how : {"", " --whole-turn"}) {
+    const testkit::RunResult r = testkit::run_cli("critical --json - " + fixture + how, dir_);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["counts"]["orientations"], 76) << how;
+    EXPECT_EQ(j["stats"]["mapped"].get<int>() > 0, std::string(how).empty()) << how;
   }
 }

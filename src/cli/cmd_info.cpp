@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
+#include "cslice/symmetry.hpp"
 
 namespace cslice::cli {
 
@@ -50,6 +51,16 @@ nlohmann::ordered_json part_json(const Part& part) {
       {"loop_details", loops}};
 }
 
+// What each symmetry of the pair does to theta ("pi - theta"), as docs/symmetry.md writes it.
+std::vector<std::string> symmetry_names(const Pair& pair) {
+  static const char* const turned[4] = {"theta", "theta + pi/2", "theta + pi", "theta - pi/2"};
+  static const char* const reversed[4] = {"-theta", "pi/2 - theta", "pi - theta", "-pi/2 - theta"};
+  std::vector<std::string> out;
+  for (const PairSymmetry& s : pair_symmetries(pair))
+    out.push_back((s.reverses_theta ? reversed : turned)[s.quarter_turns]);
+  return out;
+}
+
 std::string info_json(const Pair& pair) {
   nlohmann::ordered_json requested = nullptr;
   if (pair.requested_tolerance) requested = *pair.requested_tolerance;
@@ -63,6 +74,7 @@ std::string info_json(const Pair& pair) {
         {"geometric", pair.tol.geometric},
         {"angular", pair.tol.angular}}},
       {"features", pair.moving.feature_count() + pair.fixed.feature_count()},
+      {"symmetries", symmetry_names(pair)},
       {"moving", part_json(pair.moving)},
       {"fixed", part_json(pair.fixed)}};
   return out.dump(2) + "\n";
@@ -112,6 +124,10 @@ std::string info_text(const Pair& pair) {
   row("features", std::to_string(pair.moving.feature_count() + pair.fixed.feature_count()) +
                       " (moving " + std::to_string(pair.moving.feature_count()) + ", fixed " +
                       std::to_string(pair.fixed.feature_count()) + ")");
+  std::string symmetries;
+  for (const std::string& name : symmetry_names(pair))
+    symmetries += (symmetries.empty() ? "theta -> " : ", ") + name;
+  row("symmetry", symmetries.empty() ? "none" : symmetries + " (docs/symmetry.md)");
   out << "\n";
   write_part(out, pair, pair.moving);
   out << "\n";
