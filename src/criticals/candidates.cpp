@@ -18,12 +18,15 @@ int Binning::bin_of(double theta) const {
 }
 
 std::vector<std::vector<int>> alive_families_by_bin(const std::vector<ContactFamily>& families,
-                                                    const Binning& binning) {
+                                                    const Binning& binning,
+                                                    const std::vector<char>& wanted) {
   std::vector<std::vector<int>> alive(binning.count);
+  const auto is_wanted = [&](int bin) { return wanted.empty() || wanted[size_t(bin)]; };
   for (size_t i = 0; i < families.size(); ++i) {
     const ContactFamily& f = families[i];
     if (f.always_alive() || f.alive.span + 2.0 * binning.width >= kTwoPi) {
-      for (auto& bin : alive) bin.push_back(int(i));
+      for (int bin = 0; bin < binning.count; ++bin)
+        if (is_wanted(bin)) alive[size_t(bin)].push_back(int(i));
       continue;
     }
     // The bins from the one holding the interval's start to the one holding its end, and
@@ -32,7 +35,7 @@ std::vector<std::vector<int>> alive_families_by_bin(const std::vector<ContactFam
     const int last = binning.bin_of(f.alive.lo) + int(f.alive.span / binning.width) + 2;
     for (int b = first; b <= last; ++b) {
       const int bin = (b % binning.count + binning.count) % binning.count;
-      if (alive_within(f, binning.lower(bin), binning.lower(bin) + binning.width))
+      if (is_wanted(bin) && alive_within(f, binning.lower(bin), binning.lower(bin) + binning.width))
         alive[bin].push_back(int(i));
     }
   }

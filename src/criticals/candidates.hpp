@@ -32,9 +32,11 @@ struct BinEntry {
   Box box;
 };
 
-// The families alive in each bin (indices, ascending).
+// The families alive in each bin (indices, ascending); only in the bins `wanted` marks, when
+// it marks any.
 std::vector<std::vector<int>> alive_families_by_bin(const std::vector<ContactFamily>& families,
-                                                    const Binning& binning);
+                                                    const Binning& binning,
+                                                    const std::vector<char>& wanted = {});
 
 // Where the whole curves two covers lie on cross (the full circle of an arc; the line of a
 // segment, as far as 4 sizes past its ends), each crossing with the sine of the angle between

@@ -86,7 +86,7 @@ struct Context {
         // For a symmetric pair too: 32 within its fundamental domain (128 and 256 over the
         // turn) cost the fastener 12% more instructions and the cam 3%, for 4% off the fixture.
         binning(std::clamp(int(families.size()) / 8, 32, 1 << 12)),
-        alive(alive_families_by_bin(families, binning)) {
+        alive(alive_families_by_bin(families, binning, searched_bins())) {
     for (const ContactFamily& f : families) equations.push_back(family_equation(f));
     if (!domain) symmetries.clear();
     for (size_t i = 0; domain && i < families.size(); ++i)
@@ -112,6 +112,13 @@ struct Context {
 
   std::vector<BinEntry> entries(int bin) const {
     return bin_entries(families, alive[bin], binning, bin, pair.tol.criticality);
+  }
+
+  // Which bins are searched: every one, unless symmetries leave only their domain's.
+  std::vector<char> searched_bins() const {
+    std::vector<char> out;
+    for (int b = 0; domain && b < binning.count; ++b) out.push_back(bin_in_domain(b));
+    return out;
   }
 
   // With symmetries, only orientations of their fundamental domain (grown by the critical
@@ -256,7 +263,8 @@ class Worker {
     stats.roots += long(r.roots.size());
     near_.clear();
     for (double theta : r.roots) {
-      if (task.near(ctx_.binning, theta, slack))
+      // With symmetries, a bin may reach past their domain: its roots there are images.
+      if (task.near(ctx_.binning, theta, slack) && ctx_.in_domain(theta))
         near_.push_back(theta);
       else
         ++stats.culled;

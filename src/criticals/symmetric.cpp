@@ -1,6 +1,8 @@
 // Critical orientations of a symmetric pair (src/criticals/symmetric.hpp).
 #include "criticals/symmetric.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -153,13 +155,15 @@ long add_symmetric_images(std::vector<Criticality>& kept,
   const size_t originals = kept.size(), n = symmetries.size();
   const Found found(kept, tol);
   // Every image, and the criticality found directly that it repeats.
+  // In parallel (in the caller's arena), each stored at its own index.
   std::vector<Image> images(originals * n);
-  for (size_t i = 0; i < originals; ++i)
+  tbb::parallel_for(size_t(0), originals, [&](size_t i) {
     for (size_t s = 0; s < n; ++s) {
       Image& m = images[i * n + s];
       m.place = image_place(kept[i], symmetries[s], segment_end_at);
       m.found = found.find(m.place);
     }
+  });
   // Found criticalities that repeat one another (two equations finding one event) form a
   // class, named by its first member. A class is the image of an earlier one when found at
   // an image directly (a mirror's two sides of theta = 0, say); only the others, the

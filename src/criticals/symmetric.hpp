@@ -32,6 +32,7 @@ struct ThetaDomain {
 std::optional<ThetaDomain> fundamental_domain(const std::vector<PairSymmetry>& symmetries);
 
 // Where a segment_end criticality of these features happens: its family's first end at theta.
+// Called from several threads at once.
 using SegmentEndPoint = std::function<Vec2(const FeaturePairRef&, double theta)>;
 
 // Adds to `kept` (the criticalities found in the fundamental domain, grown a little) the
