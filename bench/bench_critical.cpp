@@ -3,6 +3,8 @@
 // example; random curved pairs of about 100 and 1,000 features, with the measured growth.
 //
 //   BM_CriticalExample/<name>/threads:<t>  the paper's examples on t threads (oneTBB)
+//   BM_CriticalWholeTurn/<name>/threads:<t>  the same searching every orientation, not only a
+//                              fundamental domain of the pair's symmetries (docs/symmetry.md)
 //   BM_CriticalCurved/<n>      random lobed stars, n vertices per part (4n features): each
 //                              vertex's radius jittered by 10%, half the edges arcs
 // Counters: features, families (feature pairs that touch at some orientation), equations
@@ -38,10 +40,12 @@ const cslice::Pair& curved_pair(int n) {
   throw std::runtime_error("curved_pair: no seed gave a valid pair");
 }
 
-void run_critical(benchmark::State& state, const cslice::Pair& pair, int threads = 0) {
+void run_critical(benchmark::State& state, const cslice::Pair& pair, int threads = 0,
+                  bool map_symmetric = true) {
   cslice::CriticalSet set;
   cslice::CriticalOptions options;
   options.threads = threads;
+  options.map_symmetric = map_symmetric;
   for (auto _ : state) {
     set = cslice::critical_orientations(pair, options);
     benchmark::DoNotOptimize(set.orientations.data());
@@ -57,6 +61,10 @@ void run_critical(benchmark::State& state, const cslice::Pair& pair, int threads
 
 void BM_CriticalExample(benchmark::State& state, const std::string& name) {
   run_critical(state, cslice::testkit::load_example(name), static_cast<int>(state.range(0)));
+}
+
+void BM_CriticalWholeTurn(benchmark::State& state, const std::string& name) {
+  run_critical(state, cslice::testkit::load_example(name), static_cast<int>(state.range(0)), false);
 }
 
 void BM_CriticalCurved(benchmark::State& state) {
@@ -81,6 +89,22 @@ BENCHMARK_CAPTURE(BM_CriticalExample, fixture, std::string("fixture"))
     ->Arg(2)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_CriticalExample, fastener, std::string("fastener"))
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond);
+// The symmetric examples (the knee has none).
+BENCHMARK_CAPTURE(BM_CriticalWholeTurn, cam, std::string("cam"))
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_CriticalWholeTurn, fixture, std::string("fixture"))
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_CriticalWholeTurn, fastener, std::string("fastener"))
     ->ArgName("threads")
     ->Arg(1)
     ->Arg(2)

@@ -6,6 +6,8 @@
 //   BM_Space/<name>/threads:<t>  the example on t threads (oneTBB; the result is the same)
 //   BM_SpaceFromScratch/<name>/threads:1  every slice computed from scratch, none evaluated
 //                                from its interval's structure (SpaceOptions::evaluate_slices)
+//                                or mapped across a symmetry (SpaceOptions::map_symmetric), as
+//                                `cslice compute --from-scratch`
 // Counters: critical orientations, slices stored, and the milliseconds spent on the
 // critical orientations (the rest is slices and topology).
 #include <benchmark/benchmark.h>
@@ -22,6 +24,7 @@ void run_space(benchmark::State& state, const std::string& name, bool evaluate) 
   cslice::SpaceOptions options;
   options.threads = static_cast<int>(state.range(0));
   options.evaluate_slices = evaluate;
+  options.map_symmetric = evaluate;
   cslice::SlicedSpace space;
   double criticals_seconds = 0.0;
   for (auto _ : state) {
