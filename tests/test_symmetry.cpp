@@ -26,6 +26,7 @@
 #include "support/moved_examples.hpp"
 #include "support/random_polygons.hpp"
 #include "support/slice_oracle.hpp"
+#include "support/symmetric_pairs.hpp"
 
 using namespace cslice;
 
@@ -86,75 +87,16 @@ int check_mapped_slices(const Pair& pair, const std::string& name, size_t most =
     // segments, naming them is the computed slice's rule, so such slices are not mapped.
     for (const FreeComponent& c : s.free_components) {
       const int match = computed.locate(c.sample);
-      if (match >= 0)
+      if (match >= 0) {
         EXPECT_EQ(boundary_labels(s, c), boundary_labels(computed, computed.free_components[match]))
             << what << ": component " << c.id;
+      }
     }
     testkit::expect_boundary_sides_agree_with_classify(pair, s, what);
     testkit::check_slice_against_classify(pair, s, 100, rng, what, false);
     expect_cycles_chain(s, what);
   }
   return static_cast<int>(mapped.size());
-}
-
-// A star around the origin symmetric under y -> -y: `k` vertices at angles in (0, pi), their
-// mirror images, and random bulges on the edges (a mirrored edge keeps its bulge, as the mirror
-// and the reversal of the loop both negate it).
-std::vector<std::array<double, 3>> mirror_star(std::mt19937& rng, int k, double r0, double r1) {
-  std::uniform_real_distribution<double> radius(r0, r1), jitter(-0.3, 0.3);
-  std::uniform_int_distribution<int> bulge(-1, 1);
-  std::vector<std::array<double, 3>> upper;
-  for (int i = 0; i < k; ++i) {
-    const double a = kPi * (i + 0.5 + jitter(rng)) / k, r = radius(rng);
-    upper.push_back({r * std::cos(a), r * std::sin(a), 0.1 * bulge(rng)});
-  }
-  // Counterclockwise: the lower half from angle -pi up, then the upper half.
-  std::vector<std::array<double, 3>> loop;
-  for (int i = k - 1; i >= 0; --i) {
-    // The edge from this image to the next one up mirrors the upper edge ending at vertex i.
-    const double b = i > 0 ? upper[i - 1][2] : 0.1 * bulge(rng);
-    loop.push_back({upper[i][0], -upper[i][1], b});
-  }
-  for (int i = 0; i < k; ++i) loop.push_back(upper[i]);
-  loop.back()[2] = 0.0;  // the edge across the axis at angle pi mirrors onto itself
-  return loop;
-}
-
-// A star around the origin symmetric under quarter turns: k vertices per quarter.
-std::vector<std::array<double, 3>> quarter_star(std::mt19937& rng, int k, double r0, double r1) {
-  std::uniform_real_distribution<double> radius(r0, r1), jitter(-0.3, 0.3);
-  std::uniform_int_distribution<int> bulge(-1, 1);
-  std::vector<std::array<double, 3>> quarter, loop;
-  for (int i = 0; i < k; ++i) {
-    const double a = 0.5 * kPi * (i + 0.5 + jitter(rng)) / k, r = radius(rng);
-    quarter.push_back({r * std::cos(a), r * std::sin(a), 0.1 * bulge(rng)});
-  }
-  for (int q = 0; q < 4; ++q)
-    for (const auto& v : quarter) {
-      const Vec2 p = QuarterMap{q, false}.apply({v[0], v[1]});
-      loop.push_back({p.x, p.y, v[2]});
-    }
-  return loop;
-}
-
-// The loop turned by `turns` quarter turns and moved to `centre` (by one rounded addition,
-// so the symmetry about the centre holds to round-off only).
-nlohmann::json placed_loop(const std::vector<std::array<double, 3>>& loop, int turns, Vec2 centre) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const auto& v : loop) {
-    const Vec2 p = QuarterMap{turns, false}.apply({v[0], v[1]}) + centre;
-    out.push_back({p.x, p.y, v[2]});
-  }
-  return out;
-}
-
-Pair pair_of(const nlohmann::json& moving, const nlohmann::json& fixed, const std::string& name) {
-  nlohmann::json j;
-  j["name"] = name;
-  j["units"] = "mm";
-  j["moving"]["loops"] = nlohmann::json::array({moving});
-  j["fixed"]["loops"] = nlohmann::json::array({fixed});
-  return testkit::parse_or_throw(j.dump(), name);
 }
 
 // The critical orientations found in the symmetries' fundamental domain and mapped: the same
@@ -254,24 +196,15 @@ TEST(Symmetry, MappedSlicesOfTheExamplesAreTheSlicesAtTheirOrientations) {
 }
 
 TEST(Symmetry, MappedSlicesOfRandomSymmetricPairsAreTheSlicesAtTheirOrientations) {
-  std::mt19937 rng(2026);
-  for (int k = 0; k < 4; ++k) {
-    // A fixed part symmetric under quarter turns about a point off the origin, a moving part
-    // under a mirror: theta -> theta + pi / 2, pi and 3 pi / 2.
-    const Vec2 centre{0.37 * k, -0.61};
-    const Pair turns = pair_of(placed_loop(mirror_star(rng, 4, 0.5, 1.0), 0, {}),
-                               placed_loop(quarter_star(rng, 3, 2.0, 3.0), 0, centre),
-                               "quarter turns " + std::to_string(k));
-    EXPECT_EQ(theta_maps(turns),
-              (std::set<std::pair<int, bool>>{{1, false}, {2, false}, {3, false}}));
-    EXPECT_GT(check_mapped_slices(turns, "quarter turns " + std::to_string(k), 8), 0);
-    // A fixed part symmetric under x -> 2 cx - x, a moving part under y -> -y: theta ->
-    // pi - theta.
-    const Pair mirrors = pair_of(placed_loop(mirror_star(rng, 4, 0.5, 1.0), 0, {}),
-                                 placed_loop(mirror_star(rng, 6, 2.0, 3.0), 1, centre),
-                                 "mirrors " + std::to_string(k));
-    EXPECT_EQ(theta_maps(mirrors), (std::set<std::pair<int, bool>>{{2, true}}));
-    EXPECT_GT(check_mapped_slices(mirrors, "mirrors " + std::to_string(k), 8), 0);
+  // Mirror-symmetric moving stars around fixed stars symmetric under quarter turns (theta ->
+  // theta + pi / 2, pi, 3 pi / 2) or a mirror (theta -> pi - theta), or inside such openings.
+  using Maps = std::set<std::pair<int, bool>>;
+  for (unsigned seed = 0; seed < 8; ++seed) {
+    const testkit::RandomPair p = testkit::symmetric_pair(seed);
+    const Maps expected =
+        seed % 2 == 0 ? Maps{{1, false}, {2, false}, {3, false}} : Maps{{2, true}};
+    EXPECT_EQ(theta_maps(p.pair), expected) << p.json;
+    EXPECT_GT(check_mapped_slices(p.pair, "symmetric pair " + std::to_string(seed), 8), 0);
   }
 }
 
@@ -280,22 +213,9 @@ TEST(Symmetry, CriticalOrientationsFromTheFundamentalDomainAreThoseOfTheWholeTur
     EXPECT_GT(check_symmetric_criticals(testkit::load_example(name), name), 0) << name;
   EXPECT_EQ(check_symmetric_criticals(testkit::load_example("knee"), "knee"), 0);
   EXPECT_GT(check_symmetric_criticals(testkit::mirrored_example("fixture"), "fixture mirrored"), 0);
-  std::mt19937 rng(77);
-  for (int k = 0; k < 3; ++k) {
-    const Vec2 centre{-0.23 * k, 0.41};
-    const std::string turns = "quarter turns " + std::to_string(k);
-    EXPECT_GT(check_symmetric_criticals(
-                  pair_of(placed_loop(mirror_star(rng, 4, 0.5, 1.0), 0, {}),
-                          placed_loop(quarter_star(rng, 3, 2.0, 3.0), 0, centre), turns),
-                  turns),
-              0);
-    const std::string mirrors = "mirrors " + std::to_string(k);
-    EXPECT_GT(check_symmetric_criticals(
-                  pair_of(placed_loop(mirror_star(rng, 4, 0.5, 1.0), 0, {}),
-                          placed_loop(mirror_star(rng, 6, 2.0, 3.0), 1, centre), mirrors),
-                  mirrors),
-              0);
-  }
+  for (unsigned seed = 8; seed < 14; ++seed)
+    check_symmetric_criticals(testkit::symmetric_pair(seed).pair,
+                              "symmetric pair " + std::to_string(seed));
 }
 
 class SymmetryCli : public testkit::ScratchDirTest {

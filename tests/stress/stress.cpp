@@ -3,6 +3,8 @@
 //   cslice_stress --seeds FIRST LAST    random curved pairs FIRST..LAST-1 (testkit::stress_pair)
 //   cslice_stress --designed FIRST LAST designed pairs FIRST..LAST-1 (testkit::designed_pair:
 //                                       unit grids, perfect fits, symmetric parts)
+//   cslice_stress --symmetric FIRST LAST random pairs with symmetries (testkit::symmetric_pair:
+//                                       quarter turns and mirrors, docs/symmetry.md)
 //   cslice_stress PAIR.json ...         pair files (designed fits, imported parts)
 //   --scale K                           every random and designed pair drawn K times larger
 //                                       first (points, radii and tolerance): the same pair in
@@ -17,7 +19,8 @@
 // triangles once each way, nothing coned or joined straight), and the 3D topology's joins at
 // every critical orientation against components carried across it, both ways: no join
 // missed, none unconfirmed (tests/support/crossings); slices evaluated from their interval's
-// structure against the same computed from scratch and classify. A
+// structure, and slices mapped across a symmetry of the pair, against the same computed from
+// scratch and classify. A
 // failing pair is printed (its file, or its JSON for a seed) and the exit status is 1. Not run by
 // ctest: a few hundred pairs take minutes.
 #include <gtest/gtest.h>
@@ -40,6 +43,7 @@
 #include "support/moved_examples.hpp"
 #include "support/random_parts.hpp"
 #include "support/slice_oracle.hpp"
+#include "support/symmetric_pairs.hpp"
 
 using namespace cslice;
 
@@ -48,6 +52,7 @@ namespace {
 std::vector<std::string> g_files;
 unsigned g_first = 0, g_last = 0;
 unsigned g_designed_first = 0, g_designed_last = 0;
+unsigned g_symmetric_first = 0, g_symmetric_last = 0;
 double g_scale = 1.0, g_offset = 0.0;
 
 // Closed and consistently oriented once the seam at theta = pi is identified, as
@@ -133,6 +138,8 @@ TEST(Stress, Pairs) {
   check_seeds(g_first, g_last, testkit::stress_pair, "seed", checked, failed);
   check_seeds(g_designed_first, g_designed_last, testkit::designed_pair, "designed", checked,
               failed);
+  check_seeds(g_symmetric_first, g_symmetric_last, testkit::symmetric_pair, "symmetric", checked,
+              failed);
   for (const std::string& file : g_files) {
     LoadResult r = load_pair(file);
     if (!r.ok()) {
@@ -166,14 +173,18 @@ int main(int argc, char** argv) {
       g_designed_first = unsigned(std::stoul(argv[i + 1]));
       g_designed_last = unsigned(std::stoul(argv[i + 2]));
       i += 2;
+    } else if (arg == "--symmetric" && i + 2 < argc) {
+      g_symmetric_first = unsigned(std::stoul(argv[i + 1]));
+      g_symmetric_last = unsigned(std::stoul(argv[i + 2]));
+      i += 2;
     } else {
       g_files.push_back(arg);
     }
   }
-  if (g_files.empty() && g_first >= g_last && g_designed_first >= g_designed_last) {
+  if (g_files.empty() && g_first >= g_last && g_designed_first >= g_designed_last &&
+      g_symmetric_first >= g_symmetric_last) {
     std::cerr << "usage: cslice_stress [--scale K] [--offset X] --seeds FIRST LAST | --designed "
-                 "FIRST LAST | "
-                 "PAIR.json ...\n";
+                 "FIRST LAST | --symmetric FIRST LAST | PAIR.json ...\n";
     return 2;
   }
   return RUN_ALL_TESTS();
