@@ -68,7 +68,7 @@ std::pair<Result, Result> with_and_without_symmetry(const Pair& pair,
 // compute_space's mapped slices (up to `most`, evenly spread) against the slices computed at
 // their orientations, beside their boundaries and at random points against classify; the
 // space without mapping has the same topology. Returns how many slices were mapped.
-int check_mapped_slices(const Pair& pair, const std::string& name, size_t most = 16) {
+int check_mapped_slices(const Pair& pair, const std::string& name, size_t most = 1000) {
   const auto [space, plain] = with_and_without_symmetry(pair, compute_space);
   EXPECT_EQ(space.slices.size(), plain.slices.size()) << name;
   EXPECT_EQ(space.topology.components.size(), plain.topology.components.size()) << name;

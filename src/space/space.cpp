@@ -14,6 +14,7 @@
 #include "criticals/families.hpp"
 #include "cslice/slice_io.hpp"
 #include "cslice/symmetry.hpp"
+#include "slice/slice_image.hpp"
 #include "space/space_build.hpp"
 
 namespace cslice {
@@ -203,20 +204,29 @@ std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Plann
       first.push_back(i);
   }
   // On this thread: a mapped slice costs a copy, a few percent of one computed. A slice
-  // whose pieces lie along coincident contact segments names them by the lowest id, which a
-  // mapped slice, keeping its source's order, would not: those images are computed instead.
+  // whose pieces lie along coincident contact segments names them by the lowest id, in the
+  // order the contact segments are made at its theta: its image takes the contact segments
+  // made at its own theta, and its names from them (mapped_slice_as_computed), or is
+  // computed where that cannot be done.
+  ContactMaker contacts(pair);
   const auto map_images = [&](const std::vector<size_t>& which) {
     std::vector<size_t> computed;
     for (size_t i : which) {
       const int source = images.source[i];
       const int interval = plan[source].interval;
-      if (out[source].slice.coincident_pieces ||
-          (out[source].evaluated && out[representative[interval]].slice.coincident_pieces)) {
+      const PairSymmetry& symmetry = symmetries[images.symmetry[i]];
+      const Slice& from = out[source].slice;
+      std::optional<Slice> image;
+      if (from.coincident_pieces ||
+          (out[source].evaluated && out[representative[interval]].slice.coincident_pieces))
+        image = mapped_slice_as_computed(from, symmetry, plan[i].theta, contacts);
+      else
+        image = mapped_slice(from, symmetry, plan[i].theta);
+      if (!image) {
         computed.push_back(i);
         continue;
       }
-      store(i, mapped_slice(out[source].slice, symmetries[images.symmetry[i]], plan[i].theta),
-            false);
+      store(i, std::move(*image), false);
       out[i].mapped = true;
     }
     for_each_index_parallel(pair, computed.size(), rules.threads, [&](size_t k, Slicer& s) {
