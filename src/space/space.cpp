@@ -166,6 +166,20 @@ ImagePlan plan_images(const std::vector<Planned>& plan, const std::vector<PairSy
   return out;
 }
 
+// The image at theta of a stored slice under `symmetry`, or nothing where it must be
+// computed. A slice whose pieces lie along coincident contact segments names them by the
+// lowest id, in the order the contact segments are made at its theta: its image takes the
+// contact segments made at its own theta and its names from them (mapped_slice_as_computed).
+// An evaluated slice has its representative's pieces (null with no critical orientation,
+// where no slice is evaluated).
+std::optional<Slice> image_of(const SpaceSlice& source, const Slice* representative,
+                              const PairSymmetry& symmetry, double theta, ContactMaker& contacts) {
+  const bool inherits = source.evaluated && representative && representative->coincident_pieces;
+  if (source.slice.coincident_pieces || inherits)
+    return mapped_slice_as_computed(source.slice, symmetry, theta, contacts);
+  return mapped_slice(source.slice, symmetry, theta);
+}
+
 }  // namespace
 
 std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Planned>& plan,
@@ -203,25 +217,17 @@ std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Plann
     else
       first.push_back(i);
   }
-  // On this thread: a mapped slice costs a copy, a few percent of one computed. A slice
-  // whose pieces lie along coincident contact segments names them by the lowest id, in the
-  // order the contact segments are made at its theta: its image takes the contact segments
-  // made at its own theta, and its names from them (mapped_slice_as_computed), or is
-  // computed where that cannot be done.
+  // On this thread: a mapped slice costs a copy, a few percent of one computed; the images
+  // that cannot be mapped are computed after, in parallel.
   ContactMaker contacts(pair);
   const auto map_images = [&](const std::vector<size_t>& which) {
     std::vector<size_t> computed;
     for (size_t i : which) {
-      const int source = images.source[i];
-      const int interval = plan[source].interval;
-      const PairSymmetry& symmetry = symmetries[images.symmetry[i]];
-      const Slice& from = out[source].slice;
-      std::optional<Slice> image;
-      if (from.coincident_pieces ||
-          (out[source].evaluated && out[representative[interval]].slice.coincident_pieces))
-        image = mapped_slice_as_computed(from, symmetry, plan[i].theta, contacts);
-      else
-        image = mapped_slice(from, symmetry, plan[i].theta);
+      const SpaceSlice& source = out[images.source[i]];
+      const int r = representative[size_t(source.interval)];  // -1 with no critical orientation
+      std::optional<Slice> image =
+          image_of(source, r >= 0 ? &out[size_t(r)].slice : nullptr, symmetries[images.symmetry[i]],
+                   plan[i].theta, contacts);
       if (!image) {
         computed.push_back(i);
         continue;
