@@ -17,6 +17,13 @@ struct AngleInterval {
   double span = 0.0;
 };
 
+// Whether the interval grown by angular_eps at both ends holds angle.
+inline bool interval_contains(const AngleInterval& a, double angle, double angular_eps) {
+  if (a.span >= kTwoPi) return true;
+  const double d = ccw_turn(a.lo, angle);
+  return d <= a.span + angular_eps || d >= kTwoPi - angular_eps;
+}
+
 struct ContactFeature {
   int feature = 0;  // index into Part::features
   FeatureKind kind = FeatureKind::segment;

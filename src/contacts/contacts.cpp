@@ -69,13 +69,6 @@ ContactKind contact_kind(const ContactFeature& m, const ContactFeature& f) {
 
 namespace {
 
-// Angle intervals are [lo, lo + span] counterclockwise, span in [0, 2pi].
-bool interval_contains(const AngleInterval& a, double angle, double angular_eps) {
-  if (a.span >= kTwoPi) return true;
-  const double d = ccw_turn(a.lo, angle);
-  return d <= a.span + angular_eps || d >= kTwoPi - angular_eps;
-}
-
 // Intersection of two circular intervals: up to two intervals (b may wrap around a's end).
 int intersect_intervals(const AngleInterval& a, const AngleInterval& b, double angular_eps,
                         std::array<AngleInterval, 2>& out) {

@@ -124,10 +124,11 @@ struct Context {
   // With symmetries, only orientations of their fundamental domain (grown by the critical
   // angle) are searched: the images of what is found there are the rest.
   bool in_domain(double theta) const {
-    return !domain || domain->contains(theta, pair.tol.critical_angle);
+    return !domain || interval_contains(*domain, theta, pair.tol.critical_angle);
   }
   bool bin_in_domain(int bin) const {
-    return !domain || domain->overlaps(binning.lower(bin), binning.width, pair.tol.critical_angle);
+    return !domain ||
+           bin_overlaps(*domain, binning.lower(bin), binning.width, pair.tol.critical_angle);
   }
 
   BinScope scope(int bin) const {
@@ -141,7 +142,7 @@ struct Context {
   std::vector<ContactFamily> families;
   std::vector<FamilyEquation> equations;
   std::vector<PairSymmetry> symmetries;  // empty unless options.map_symmetric and a domain
-  std::optional<ThetaDomain> domain;
+  std::optional<AngleInterval> domain;
   Binning binning;
   std::vector<std::vector<int>> alive;  // per bin
   // With a domain, the families by their features and kind: an image's family.

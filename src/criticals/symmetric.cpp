@@ -8,16 +8,11 @@
 #include <cmath>
 #include <iterator>
 
+#include "geometry/angle_search.hpp"
+
 namespace cslice {
 
 namespace {
-
-// The counterclockwise turn from `from` to theta, in [0, 2 pi).
-double turn_from(double from, double theta) {
-  double t = fmod_two_pi(theta - from);
-  if (t < 0.0) t += kTwoPi;
-  return t;
-}
 
 // A criticality's identity up to round-off: its condition, then its feature pairs as
 // (moving, fixed, kind), in order for an endpoint (its first pair owns the end) and sorted
@@ -118,16 +113,12 @@ struct Image {
 
 }  // namespace
 
-bool ThetaDomain::contains(double theta, double slack) const {
-  return turn_from(lo - slack, theta) <= length + 2.0 * slack;
-}
-
-bool ThetaDomain::overlaps(double from, double width, double slack) const {
+bool bin_overlaps(const AngleInterval& domain, double from, double width, double slack) {
   // The bin starts inside the grown arc, or the arc starts inside the bin.
-  return contains(from, slack) || turn_from(from, lo - slack) <= width;
+  return interval_contains(domain, from, slack) || ccw_turn(from, domain.lo - slack) <= width;
 }
 
-std::optional<ThetaDomain> fundamental_domain(const std::vector<PairSymmetry>& symmetries) {
+std::optional<AngleInterval> fundamental_domain(const std::vector<PairSymmetry>& symmetries) {
   if (symmetries.empty()) return std::nullopt;
   bool turns[4] = {true, false, false, false};
   int mirror = -1;  // the least c of a mirror theta -> c pi / 2 - theta
@@ -145,8 +136,8 @@ std::optional<ThetaDomain> fundamental_domain(const std::vector<PairSymmetry>& s
   if (count == 3 || (count == 2 && !turns[2])) return std::nullopt;
   if (mirror >= 0 && mirrors != count) return std::nullopt;  // one mirror per turn
   const double period = kTwoPi / count;
-  if (mirror < 0) return ThetaDomain{-kPi, period};
-  return ThetaDomain{wrap_angle(mirror * (kPi / 4)), period / 2};
+  if (mirror < 0) return AngleInterval{-kPi, period};
+  return AngleInterval{wrap_angle(mirror * (kPi / 4)), period / 2};
 }
 
 long add_symmetric_images(std::vector<Criticality>& kept,
@@ -200,16 +191,9 @@ void align_symmetric_orientations(CriticalSet& set, const std::vector<PairSymmet
   std::vector<CriticalOrientation>& o = set.orientations;  // sorted by theta
   const int n = int(o.size());
   std::vector<char> aligned(o.size(), false);
-  // The orientation within the critical angle of theta (either neighbour of where it would
-  // go, round through theta = +-pi), or -1.
   const auto near = [&](double theta) {
-    const auto it =
-        std::lower_bound(o.begin(), o.end(), theta,
-                         [](const CriticalOrientation& c, double t) { return c.theta < t; });
-    const int at = int(it - o.begin());
-    for (int j : {at % n, (at + n - 1) % n})
-      if (std::fabs(wrap_angle(o[j].theta - theta)) <= tol.critical_angle) return j;
-    return -1;
+    return index_near_angle(o, theta, tol.critical_angle,
+                            [](const CriticalOrientation& c) { return c.theta; });
   };
   std::vector<std::pair<int, double>> moves;  // applied after the searches, which need order
   for (int i = 0; i < n; ++i) {

@@ -7,29 +7,23 @@
 #include <optional>
 #include <vector>
 
+#include "contacts/contact_features.hpp"
 #include "cslice/critical.hpp"
 #include "cslice/symmetry.hpp"
 
 namespace cslice {
 
-// An arc of orientations from lo turning counterclockwise by length, which the symmetries'
-// images of cover the whole turn.
-struct ThetaDomain {
-  double lo = -kPi;
-  double length = kTwoPi;
+// Whether some orientation of the bin [from, from + width] lies within `domain` grown by
+// slack at both ends.
+bool bin_overlaps(const AngleInterval& domain, double from, double width, double slack);
 
-  // Whether theta lies within the arc grown by slack at both ends.
-  bool contains(double theta, double slack) const;
-  // Whether some orientation of [from, from + width) lies within the arc grown by slack.
-  bool overlaps(double from, double width, double slack) const;
-};
-
-// The fundamental domain of the symmetries' action on theta: for turns by a quarter or half
-// turn alone, one turn divided by their number; with a mirror theta -> c pi / 2 - theta as
+// The fundamental domain of the symmetries' action on theta, an arc whose images under them
+// cover the whole turn: for turns by a quarter or half turn alone, one turn divided by their
+// number; with a mirror theta -> c pi / 2 - theta as
 // well, half of that, starting at the mirror's fixed orientation c pi / 4. Nothing when the
 // symmetries are not a group of that form (as detection within a slack could leave them), or
 // there are none.
-std::optional<ThetaDomain> fundamental_domain(const std::vector<PairSymmetry>& symmetries);
+std::optional<AngleInterval> fundamental_domain(const std::vector<PairSymmetry>& symmetries);
 
 // Where a segment_end criticality of these features happens: its family's first end at theta.
 // Called from several threads at once.

@@ -14,6 +14,7 @@
 #include "criticals/families.hpp"
 #include "cslice/slice_io.hpp"
 #include "cslice/symmetry.hpp"
+#include "geometry/angle_search.hpp"
 #include "slice/slice_image.hpp"
 #include "space/space_build.hpp"
 
@@ -123,13 +124,7 @@ struct ImagePlan {
 
 // The planned slice within `angular` of theta, or -1 (the plan is sorted by theta).
 int planned_near(const std::vector<Planned>& plan, double theta, double angular) {
-  const auto it = std::lower_bound(plan.begin(), plan.end(), theta,
-                                   [](const Planned& p, double t) { return p.theta < t; });
-  const int n = static_cast<int>(plan.size()), at = static_cast<int>(it - plan.begin());
-  // Its neighbours either side, the first and last wrapping round through theta = +-pi.
-  for (int i : {at % n, (at + n - 1) % n})
-    if (std::fabs(wrap_angle(plan[i].theta - theta)) <= angular) return i;
-  return -1;
+  return index_near_angle(plan, theta, angular, [](const Planned& p) { return p.theta; });
 }
 
 // Each slice that `may_source` accepts and that is no image yet becomes a source, and every
