@@ -22,19 +22,18 @@ class SliceMapper {
   // a slice has a side that matters on its left (blocked space along a contact segment, the
   // component along a boundary piece).
   Curve curve(const Curve& c) const {
-    if (c.is_segment()) {
-      const Vec2 from = point(c.from), to = point(c.to);
-      return mirror_ ? make_segment(to, from) : make_segment(from, to);
-    }
     Curve r = c;
     r.from = point(c.from);
     r.to = point(c.to);
-    r.center = point(c.center);
-    r.start_angle = s_.plane.map.apply_angle(c.start_angle);
-    if (!mirror_) return r;
-    r.sweep = -c.sweep;
-    r.bulge = -c.bulge;
-    return reversed(r);
+    if (c.is_arc()) {
+      r.center = point(c.center);
+      r.start_angle = s_.plane.map.apply_angle(c.start_angle);
+      if (mirror_) {  // the image turns the other way
+        r.sweep = -c.sweep;
+        r.bulge = -c.bulge;
+      }
+    }
+    return mirror_ ? reversed(r) : r;
   }
 
   void pieces(std::vector<ContactPiece>& pieces, bool cycle) const {
@@ -87,6 +86,15 @@ std::vector<int> counterparts(const std::vector<ContactSegment>& mapped,
   return out;
 }
 
+// Calls f on every piece of the slice: the realizable ones and those of the boundary cycles.
+template <class F>
+void for_each_piece(Slice& slice, F f) {
+  for (ContactPiece& p : slice.realizable) f(p);
+  for (FreeComponent& c : slice.free_components)
+    for (std::vector<ContactPiece>& cycle : c.boundary)
+      for (ContactPiece& p : cycle) f(p);
+}
+
 // Whether curve c runs along the whole of piece p: within eps of its ends and its middle.
 bool runs_along(const Curve& c, const Curve& p, double eps) {
   return distance_to_curve(c, point_at(p, 0.5)) <= eps && distance_to_curve(c, p.from) <= eps &&
@@ -104,10 +112,7 @@ void name_coincident_pieces(Slice& slice) {
       }
     }
   };
-  for (ContactPiece& p : slice.realizable) rename(p);
-  for (FreeComponent& c : slice.free_components)
-    for (std::vector<ContactPiece>& cycle : c.boundary)
-      for (ContactPiece& p : cycle) rename(p);
+  for_each_piece(slice, rename);
 }
 
 }  // namespace
@@ -131,10 +136,7 @@ std::optional<Slice> mapped_slice_as_computed(const Slice& source, const PairSym
       return std::nullopt;
   out.contact_segments = std::move(fresh);
   const auto id = [&](int old) { return to[size_t(old)]; };
-  for (ContactPiece& p : out.realizable) p.segment = id(p.segment);
-  for (FreeComponent& c : out.free_components)
-    for (std::vector<ContactPiece>& cycle : c.boundary)
-      for (ContactPiece& p : cycle) p.segment = id(p.segment);
+  for_each_piece(out, [&](ContactPiece& p) { p.segment = id(p.segment); });
   for (DegenerateContact& d : out.degenerate) {
     for (int& s : d.segments) s = id(s);
     std::sort(d.segments.begin(), d.segments.end());
