@@ -59,13 +59,26 @@ void run_critical(benchmark::State& state, const cslice::Pair& pair, int threads
   state.counters["orientations"] = static_cast<double>(set.orientations.size());
 }
 
-void BM_CriticalExample(benchmark::State& state, const std::string& name) {
-  run_critical(state, cslice::testkit::load_example(name), static_cast<int>(state.range(0)));
-}
-
-void BM_CriticalWholeTurn(benchmark::State& state, const std::string& name) {
-  run_critical(state, cslice::testkit::load_example(name), static_cast<int>(state.range(0)), false);
-}
+// The paper's examples, on one and two threads; the symmetric ones (the knee has none) also
+// searching the whole turn.
+const bool kExamplesRegistered = [] {
+  for (const bool whole_turn : {false, true})
+    for (const std::string name : {"knee", "cam", "fixture", "fastener"}) {
+      if (whole_turn && name == "knee") continue;
+      const std::string title =
+          std::string(whole_turn ? "BM_CriticalWholeTurn/" : "BM_CriticalExample/") + name;
+      benchmark::RegisterBenchmark(title.c_str(),
+                                   [=](benchmark::State& state) {
+                                     run_critical(state, cslice::testkit::load_example(name),
+                                                  static_cast<int>(state.range(0)), !whole_turn);
+                                   })
+          ->ArgName("threads")
+          ->Arg(1)
+          ->Arg(2)
+          ->Unit(benchmark::kMillisecond);
+    }
+  return true;
+}();
 
 void BM_CriticalCurved(benchmark::State& state) {
   run_critical(state, curved_pair(static_cast<int>(state.range(0))));
@@ -73,42 +86,6 @@ void BM_CriticalCurved(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK_CAPTURE(BM_CriticalExample, knee, std::string("knee"))
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_CriticalExample, cam, std::string("cam"))
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_CriticalExample, fixture, std::string("fixture"))
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_CriticalExample, fastener, std::string("fastener"))
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond);
-// The symmetric examples (the knee has none).
-BENCHMARK_CAPTURE(BM_CriticalWholeTurn, cam, std::string("cam"))
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_CriticalWholeTurn, fixture, std::string("fixture"))
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_CriticalWholeTurn, fastener, std::string("fastener"))
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CriticalCurved)
     ->Arg(6)
     ->Arg(12)
