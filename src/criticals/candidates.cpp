@@ -12,21 +12,59 @@ namespace cslice {
 
 Binning::Binning(int bins) : count(std::max(bins, 1)), width(kTwoPi / std::max(bins, 1)) {}
 
+Binning::Binning(int bins, double from_angle, double span)
+    : count(std::max(bins, 1)),
+      from(from_angle),
+      width(span / std::max(bins, 1)),
+      whole_turn(false) {}
+
 int Binning::bin_of(double theta) const {
-  const int b = int(std::floor((wrap_angle(theta) + kPi) / width));
-  return std::clamp(b, 0, count - 1);
+  if (whole_turn) {
+    const int b = int(std::floor((wrap_angle(theta) + kPi) / width));
+    return std::clamp(b, 0, count - 1);
+  }
+  const double d = ccw_turn(from, theta), span = count * width;
+  if (d > span) return d - span < kTwoPi - d ? count - 1 : 0;
+  return std::clamp(int(std::floor(d / width)), 0, count - 1);
 }
 
+namespace {
+
+// Calls visit(bin) for every bin of an arc binning that the family's alive interval can reach
+// (possibly more, some twice): those from its start to its end, one more on each side (a
+// closed bin touching it at its border counts too), and those it reaches after passing the
+// turn's end back to the arc's start.
+template <class Visit>
+void for_bins_near(const Binning& binning, const ContactFamily& f, Visit&& visit) {
+  const auto visit_range = [&](double first, double last) {
+    const int lo = std::max(0, int(std::floor(first / binning.width)) - 1);
+    const int hi = std::min(binning.count - 1, int(std::floor(last / binning.width)) + 1);
+    for (int bin = lo; bin <= hi; ++bin) visit(bin);
+  };
+  if (f.always_alive()) return visit_range(0.0, binning.count * binning.width);
+  const double start = ccw_turn(binning.from, f.alive.lo), end = start + f.alive.span;
+  visit_range(start, end);
+  if (end + binning.width >= kTwoPi) visit_range(0.0, end - kTwoPi);
+}
+
+}  // namespace
+
 std::vector<std::vector<int>> alive_families_by_bin(const std::vector<ContactFamily>& families,
-                                                    const Binning& binning,
-                                                    const std::vector<char>& wanted) {
+                                                    const Binning& binning) {
   std::vector<std::vector<int>> alive(binning.count);
-  const auto is_wanted = [&](int bin) { return wanted.empty() || wanted[size_t(bin)]; };
+  const auto alive_in = [&](const ContactFamily& f, int bin) {
+    return alive_within(f, binning.lower(bin), binning.lower(bin) + binning.width);
+  };
   for (size_t i = 0; i < families.size(); ++i) {
     const ContactFamily& f = families[i];
+    if (!binning.whole_turn) {
+      for_bins_near(binning, f, [&](int bin) {
+        if (alive_in(f, bin)) alive[size_t(bin)].push_back(int(i));
+      });
+      continue;
+    }
     if (f.always_alive() || f.alive.span + 2.0 * binning.width >= kTwoPi) {
-      for (int bin = 0; bin < binning.count; ++bin)
-        if (is_wanted(bin)) alive[size_t(bin)].push_back(int(i));
+      for (int bin = 0; bin < binning.count; ++bin) alive[size_t(bin)].push_back(int(i));
       continue;
     }
     // The bins from the one holding the interval's start to the one holding its end, and
@@ -35,8 +73,7 @@ std::vector<std::vector<int>> alive_families_by_bin(const std::vector<ContactFam
     const int last = binning.bin_of(f.alive.lo) + int(f.alive.span / binning.width) + 2;
     for (int b = first; b <= last; ++b) {
       const int bin = (b % binning.count + binning.count) % binning.count;
-      if (is_wanted(bin) && alive_within(f, binning.lower(bin), binning.lower(bin) + binning.width))
-        alive[bin].push_back(int(i));
+      if (alive_in(f, bin)) alive[bin].push_back(int(i));
     }
   }
   for (auto& bin : alive) {

@@ -13,14 +13,20 @@
 
 namespace cslice {
 
-// Equal bins over [-pi, pi).
+// Equal bins over the whole turn [-pi, pi), or over an arc of it: a symmetric pair's
+// fundamental domain, whose images are the rest.
 struct Binning {
   int count = 1;
+  double from = -kPi;
   double width = kTwoPi;
+  bool whole_turn = true;
 
   explicit Binning(int bins);
+  // `bins` bins over [from, from + span], span < 2 pi.
+  Binning(int bins, double from, double span);
+  // The bin holding theta; off an arc, the bin at its nearer end.
   int bin_of(double theta) const;
-  double lower(int bin) const { return -kPi + bin * width; }
+  double lower(int bin) const { return from + bin * width; }
 };
 
 // A family alive in a bin: its cover at the bin's middle orientation, how far its contact
@@ -32,11 +38,9 @@ struct BinEntry {
   Box box;
 };
 
-// The families alive in each bin (indices, ascending); only in the bins `wanted` marks, when
-// it marks any.
+// The families alive in each bin (indices, ascending).
 std::vector<std::vector<int>> alive_families_by_bin(const std::vector<ContactFamily>& families,
-                                                    const Binning& binning,
-                                                    const std::vector<char>& wanted = {});
+                                                    const Binning& binning);
 
 // Where the whole curves two covers lie on cross (the full circle of an arc; the line of a
 // segment, as far as 4 sizes past its ends), each crossing with the sine of the angle between

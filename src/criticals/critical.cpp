@@ -81,12 +81,8 @@ struct Context {
         families(contact_families(p)),
         symmetries(o.map_symmetric ? pair_symmetries(p) : std::vector<PairSymmetry>{}),
         domain(fundamental_domain(symmetries)),
-        // Finer bins cull more pairs but cost a cover per alive family each; one bin per
-        // eight families, at least 32, measured best on the random pairs of bench_critical.
-        // For a symmetric pair too: 32 within its fundamental domain (128 and 256 over the
-        // turn) cost the fastener 12% more instructions and the cam 3%, for 4% off the fixture.
-        binning(std::clamp(int(families.size()) / 8, 32, 1 << 12)),
-        alive(alive_families_by_bin(families, binning, searched_bins())) {
+        binning(binning_for(int(families.size()), domain, p.tol.critical_angle)),
+        alive(alive_families_by_bin(families, binning)) {
     for (const ContactFamily& f : families) equations.push_back(family_equation(f));
     if (!domain) symmetries.clear();
     for (size_t i = 0; domain && i < families.size(); ++i)
@@ -114,21 +110,24 @@ struct Context {
     return bin_entries(families, alive[bin], binning, bin, pair.tol.criticality);
   }
 
-  // Which bins are searched: every one, unless symmetries leave only their domain's.
-  std::vector<char> searched_bins() const {
-    std::vector<char> out;
-    for (int b = 0; domain && b < binning.count; ++b) out.push_back(bin_in_domain(b));
-    return out;
+  // Finer bins cull more pairs but cost a cover per alive family each; one bin per eight
+  // families over the turn, at least 32, measured best on the random pairs of bench_critical.
+  // A symmetric pair's bins cover only its fundamental domain, grown by the critical angle,
+  // as wide as the turn's: finer ones (32 within the domain) cost the fastener 12% more
+  // instructions and the cam 3%, for 4% off the fixture.
+  static Binning binning_for(int families, const std::optional<AngleInterval>& domain,
+                             double critical_angle) {
+    const int turn = std::clamp(families / 8, 32, 1 << 12);
+    if (!domain) return Binning(turn);
+    const double span = domain->span + 2.0 * critical_angle;
+    const int bins = std::max(1, int(std::lround(turn * span / kTwoPi)));
+    return Binning(bins, domain->lo - critical_angle, span);
   }
 
   // With symmetries, only orientations of their fundamental domain (grown by the critical
   // angle) are searched: the images of what is found there are the rest.
   bool in_domain(double theta) const {
     return !domain || interval_contains(*domain, theta, pair.tol.critical_angle);
-  }
-  bool bin_in_domain(int bin) const {
-    return !domain ||
-           bin_overlaps(*domain, binning.lower(bin), binning.width, pair.tol.critical_angle);
   }
 
   BinScope scope(int bin) const {
@@ -566,7 +565,6 @@ class CriticalFinder {
     for (int first = 0; first < ctx_.binning.count; first += kBlock) {
       tbb::enumerable_thread_specific<Found> per_thread;
       tbb::parallel_for(first, std::min(first + kBlock, ctx_.binning.count), [&](int b) {
-        if (!ctx_.bin_in_domain(b)) return;
         Found& f = per_thread.local();
         std::vector<BinEntry> entries = ctx_.entries(b);
         meeting_candidates(entries, ctx_.scope(b), f.pairs, f.triples);
@@ -691,7 +689,6 @@ class CriticalFinder {
     k.theta = wrap_angle(c.theta);
     k.condition = c.condition;
     k.at = c.at;
-    k.pairs.reserve(size_t(c.count));
     for (int i = 0; i < c.count; ++i) {
       const ContactFamily& fam = ctx_.families[c.families[i]];
       k.pairs.push_back({fam.moving, fam.fixed, fam.kind});

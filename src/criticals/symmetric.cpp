@@ -113,11 +113,6 @@ struct Image {
 
 }  // namespace
 
-bool bin_overlaps(const AngleInterval& domain, double from, double width, double slack) {
-  // The bin starts inside the grown arc, or the arc starts inside the bin.
-  return interval_contains(domain, from, slack) || ccw_turn(from, domain.lo - slack) <= width;
-}
-
 std::optional<AngleInterval> fundamental_domain(const std::vector<PairSymmetry>& symmetries) {
   if (symmetries.empty()) return std::nullopt;
   bool turns[4] = {true, false, false, false};
@@ -170,6 +165,7 @@ long add_symmetric_images(std::vector<Criticality>& kept,
     }
   }
   const size_t before = kept.size();
+  kept.reserve(originals * (n + 1));
   for (size_t i = 0; i < originals; ++i) {
     if (!represents[size_t(class_of[i])]) continue;
     for (size_t s = 0; s < n; ++s) {

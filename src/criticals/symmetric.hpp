@@ -13,10 +13,6 @@
 
 namespace cslice {
 
-// Whether some orientation of the bin [from, from + width] lies within `domain` grown by
-// slack at both ends.
-bool bin_overlaps(const AngleInterval& domain, double from, double width, double slack);
-
 // The fundamental domain of the symmetries' action on theta, an arc whose images under them
 // cover the whole turn: for turns by a quarter or half turn alone, one turn divided by their
 // number; with a mirror theta -> c pi / 2 - theta as
