@@ -140,22 +140,21 @@ long add_symmetric_images(std::vector<Criticality>& kept,
                           const SegmentEndPoint& segment_end_at) {
   const size_t originals = kept.size(), n = symmetries.size();
   const Found found(kept, tol);
-  // Every image, and the criticality found directly that it repeats.
-  // In parallel (in the caller's arena), each stored at its own index.
+  // Every image, and the criticality found directly that it repeats. Found criticalities
+  // that repeat one another (two equations finding one event) form a class, named by its
+  // first member. In parallel (in the caller's arena), each stored at its own index.
   std::vector<Image> images(originals * n);
+  std::vector<int> class_of(originals);
   tbb::parallel_for(size_t(0), originals, [&](size_t i) {
+    class_of[i] = found.find(found.place(i));
     for (size_t s = 0; s < n; ++s) {
       Image& m = images[i * n + s];
       m.place = image_place(kept[i], symmetries[s], segment_end_at);
       m.found = found.find(m.place);
     }
   });
-  // Found criticalities that repeat one another (two equations finding one event) form a
-  // class, named by its first member. A class is the image of an earlier one when found at
-  // an image directly (a mirror's two sides of theta = 0, say); only the others, the
-  // representatives, have their images added.
-  std::vector<int> class_of(originals);
-  for (size_t i = 0; i < originals; ++i) class_of[i] = found.find(found.place(i));
+  // A class is the image of an earlier one when found at an image directly (a mirror's two
+  // sides of theta = 0, say); only the others, the representatives, have their images added.
   std::vector<char> represents(originals, true);
   for (size_t i = 0; i < originals; ++i) {
     if (class_of[i] != int(i) || !represents[i]) continue;
