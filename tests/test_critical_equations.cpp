@@ -185,3 +185,46 @@ TEST(CriticalEquations, WholeCurvesCrossWhereTheirIntersectionSays) {
   }
   EXPECT_GT(crossings, 2000);
 }
+
+TEST(CriticalBins, EveryBinListsTheFamiliesAliveInIt) {
+  // The families listed alive in each bin, found from each family's alive interval, against
+  // orientations sampled across the bin; over the whole turn and over arcs starting anywhere
+  // (across the turn's seam too), as a symmetric pair's fundamental domain gets them.
+  int listed = 0, arcs = 0;
+  for (unsigned seed = 0; seed < 16; ++seed) {
+    const std::vector<ContactFamily> families = contact_families(testkit::stress_pair(seed).pair);
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> from(-kPi, kPi), span(0.05, 0.99 * kTwoPi);
+    for (int trial = 0; trial < 6; ++trial) {
+      const int bins = 1 + int(rng() % 40);
+      const Binning binning = trial == 0 ? Binning(bins) : Binning(bins, from(rng), span(rng));
+      arcs += binning.whole_turn ? 0 : 1;
+      const std::vector<std::vector<int>> alive = alive_families_by_bin(families, binning);
+      ASSERT_EQ(alive.size(), size_t(binning.count));
+      for (int b = 0; b < binning.count; ++b) {
+        const std::vector<int>& in_bin = alive[size_t(b)];
+        listed += int(in_bin.size());
+        ASSERT_TRUE(std::is_sorted(in_bin.begin(), in_bin.end()));
+        // bin_of puts the bin's middle in it.
+        EXPECT_EQ(binning.bin_of(binning.lower(b) + 0.5 * binning.width), b);
+        for (size_t i = 0; i < families.size(); ++i)
+          for (int k = 0; k <= 8; ++k) {
+            const double theta = binning.lower(b) + binning.width * k / 8.0;
+            if (!alive_at(families[i], theta, 0.0)) continue;
+            EXPECT_TRUE(std::binary_search(in_bin.begin(), in_bin.end(), int(i)))
+                << "seed " << seed << " trial " << trial << " bin " << b << " family " << i
+                << " alive at " << theta;
+            break;
+          }
+      }
+      if (binning.whole_turn) continue;
+      // Off the arc, the bin at its nearer end.
+      const double end = binning.from + binning.count * binning.width;
+      const double gap = kTwoPi - binning.count * binning.width;
+      EXPECT_EQ(binning.bin_of(end + 0.25 * gap), binning.count - 1);
+      EXPECT_EQ(binning.bin_of(binning.from - 0.25 * gap), 0);
+    }
+  }
+  EXPECT_EQ(arcs, 16 * 5);
+  EXPECT_GT(listed, 10000);
+}

@@ -11,12 +11,14 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <random>
 #include <set>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "criticals/symmetric.hpp"
 #include "cslice/critical.hpp"
 #include "cslice/space.hpp"
 #include "cslice/symmetry.hpp"
@@ -99,6 +101,43 @@ int check_mapped_slices(const Pair& pair, const std::string& name, size_t most =
   return static_cast<int>(mapped.size());
 }
 
+// A criticality's condition and feature pairs (in order for an endpoint, whose first pair owns
+// the end; as a set otherwise).
+std::vector<int> identity(const Criticality& c) {
+  std::vector<std::array<int, 3>> pairs;
+  for (const FeaturePairRef& p : c.pairs)
+    pairs.push_back({p.moving_feature, p.fixed_feature, int(p.kind)});
+  if (c.condition != CriticalCondition::endpoint) std::sort(pairs.begin(), pairs.end());
+  std::vector<int> id{int(c.condition)};
+  for (const auto& p : pairs) id.insert(id.end(), p.begin(), p.end());
+  return id;
+}
+
+// At the orientations of the domain's two ends, the search within the domain finds every
+// criticality that the search of the whole turn finds there, as often: families that appear
+// exactly at an end are met only by bins reaching past it.
+void expect_domain_ends_complete(const Pair& pair, const CriticalSet& set, const CriticalSet& whole,
+                                 const std::string& name) {
+  const std::optional<AngleInterval> domain = fundamental_domain(pair_symmetries(pair));
+  if (!domain) return;
+  const auto at_an_end = [&](double theta) {
+    return std::fabs(wrap_angle(theta - domain->lo)) <= pair.tol.critical_angle ||
+           std::fabs(wrap_angle(theta - domain->lo - domain->span)) <= pair.tol.critical_angle;
+  };
+  for (size_t i = 0; i < whole.orientations.size() && i < set.orientations.size(); ++i) {
+    if (!at_an_end(whole.orientations[i].theta)) continue;
+    std::multiset<std::vector<int>> found;
+    for (const Criticality& c : set.orientations[i].criticalities) found.insert(identity(c));
+    for (const Criticality& c : whole.orientations[i].criticalities) {
+      const auto it = found.find(identity(c));
+      EXPECT_TRUE(it != found.end())
+          << name << ": a " << to_string(c.condition) << " criticality at the domain's end "
+          << c.theta << " is missing";
+      if (it != found.end()) found.erase(it);
+    }
+  }
+}
+
 // The critical orientations found in the symmetries' fundamental domain and mapped: the same
 // orientations as searching the whole turn, each the exact image of another under every
 // symmetry, every criticality's image among the criticalities, and complete (no change of
@@ -109,6 +148,7 @@ long check_symmetric_criticals(const Pair& pair, const std::string& name) {
   for (size_t i = 0; i < set.orientations.size() && i < whole.orientations.size(); ++i)
     EXPECT_NEAR(set.orientations[i].theta, whole.orientations[i].theta, pair.tol.critical_angle)
         << name << ": orientation " << i;
+  expect_domain_ends_complete(pair, set, whole, name);
   std::vector<double> thetas;
   std::vector<const Criticality*> all;
   for (const CriticalOrientation& o : set.orientations) {
