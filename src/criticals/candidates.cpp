@@ -30,10 +30,10 @@ int Binning::bin_of(double theta) const {
 
 namespace {
 
-// Calls visit(bin) for every bin of an arc binning that the family's alive interval can reach
-// (possibly more, some twice): those from its start to its end, one more on each side (a
-// closed bin touching it at its border counts too), and those it reaches after passing the
-// turn's end back to the arc's start.
+// Calls visit(bin) for every bin that the family's alive interval can reach (possibly more,
+// some twice): those from its start to its end, one more on each side (a closed bin touching
+// it at its border counts too), and those it reaches after passing the turn's end back to the
+// binning's start. Over the whole turn, the bin before the first is the last.
 template <class Visit>
 void for_bins_near(const Binning& binning, const ContactFamily& f, Visit&& visit) {
   const auto visit_range = [&](double first, double last) {
@@ -45,6 +45,7 @@ void for_bins_near(const Binning& binning, const ContactFamily& f, Visit&& visit
   const double start = ccw_turn(binning.from, f.alive.lo), end = start + f.alive.span;
   visit_range(start, end);
   if (end + binning.width >= kTwoPi) visit_range(0.0, end - kTwoPi);
+  if (binning.whole_turn && start < binning.width) visit(binning.count - 1);
 }
 
 }  // namespace
@@ -52,29 +53,17 @@ void for_bins_near(const Binning& binning, const ContactFamily& f, Visit&& visit
 std::vector<std::vector<int>> alive_families_by_bin(const std::vector<ContactFamily>& families,
                                                     const Binning& binning) {
   std::vector<std::vector<int>> alive(binning.count);
-  const auto alive_in = [&](const ContactFamily& f, int bin) {
-    return alive_within(f, binning.lower(bin), binning.lower(bin) + binning.width);
-  };
   for (size_t i = 0; i < families.size(); ++i) {
     const ContactFamily& f = families[i];
-    if (!binning.whole_turn) {
-      for_bins_near(binning, f, [&](int bin) {
-        if (alive_in(f, bin)) alive[size_t(bin)].push_back(int(i));
-      });
-      continue;
-    }
-    if (f.always_alive() || f.alive.span + 2.0 * binning.width >= kTwoPi) {
+    // Over the whole turn, a family alive nearly all of it is listed in every bin, unasked.
+    if (binning.whole_turn && (f.always_alive() || f.alive.span + 2.0 * binning.width >= kTwoPi)) {
       for (int bin = 0; bin < binning.count; ++bin) alive[size_t(bin)].push_back(int(i));
       continue;
     }
-    // The bins from the one holding the interval's start to the one holding its end, and
-    // one more on each side: a closed bin touching the interval at its border counts too.
-    const int first = binning.bin_of(f.alive.lo) - 1;
-    const int last = binning.bin_of(f.alive.lo) + int(f.alive.span / binning.width) + 2;
-    for (int b = first; b <= last; ++b) {
-      const int bin = (b % binning.count + binning.count) % binning.count;
-      if (alive_in(f, bin)) alive[bin].push_back(int(i));
-    }
+    for_bins_near(binning, f, [&](int bin) {
+      if (alive_within(f, binning.lower(bin), binning.lower(bin) + binning.width))
+        alive[size_t(bin)].push_back(int(i));
+    });
   }
   for (auto& bin : alive) {
     std::sort(bin.begin(), bin.end());
