@@ -318,9 +318,10 @@ TEST(CriticalInvariance, ScalingThePairKeepsTheCriticalOrientations) {
       expect_same_angles(thetas(scaled), thetas(base), pair.tol.critical_angle);
       // The knee listed one segment end more drawn 1,000 times smaller (two switches of one
       // family that round-off made equal or not).
-      if (std::string(name) == "cam" || std::string(name) == "knee")
+      if (std::string(name) == "cam" || std::string(name) == "knee") {
         for (int c = 0; c < kCriticalConditionCount; ++c)
           EXPECT_EQ(scaled.counts[c], base.counts[c]) << to_string(CriticalCondition(c));
+      }
     }
   }
 }

@@ -354,3 +354,27 @@ TEST(Containment, ATinyArcWithSnappedEndsTogglesOnlyNearItself) {
   EXPECT_TRUE(toggles_parity(half, {0.65, 0.65}));  // between the chord and the arc
   EXPECT_FALSE(toggles_parity(half, {0.8, 0.8}));   // beyond the arc
 }
+
+// Far angles wrap by the true turn, as std::sin and std::cos take them (the double nearest
+// 2pi is 2.4e-16 short of it: by it, 1e15 rad wrapped 0.04 rad away from the orientation a
+// Transform turns by); near ones as before, by fmod's exact remainder.
+TEST(Angles, FarAnglesWrapToTheOrientationSinAndCosGive) {
+  for (double a : {1e9, -1e9, 7.5e10, -1e12, 1e15, 3e17, 1e300}) {
+    const double w = wrap_angle(a);
+    SCOPED_TRACE(a);
+    EXPECT_GE(w, -kPi);
+    EXPECT_LT(w, kPi);
+    EXPECT_NEAR(std::cos(w), std::cos(a), 1e-15);
+    EXPECT_NEAR(std::sin(w), std::sin(a), 1e-15);
+  }
+  for (double a : {-1000.5, -7.0, -kPi, 3.5, 6.0, kPi, 100.0, 6283.0}) {
+    SCOPED_TRACE(a);
+    double expected = std::fmod(a + kPi, kTwoPi);
+    if (expected < 0.0) expected += kTwoPi;
+    EXPECT_EQ(wrap_angle(a), expected - kPi);
+  }
+  // In [-pi, pi) an angle is its own principal angle, bit for bit (wrap_angle(0.1) is not).
+  for (double a : {-kPi, -1.0, 0.1, 3.14159}) EXPECT_EQ(principal_angle(a), a);
+  EXPECT_EQ(principal_angle(kPi), -kPi);
+  EXPECT_EQ(principal_angle(1e15), wrap_angle(1e15));
+}

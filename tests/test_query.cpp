@@ -124,6 +124,27 @@ TEST(SpaceQuery, RandomCurvedPairsAgreeWithClassify) {
   }
 }
 
+// A far orientation is answered at the orientation classify places it at: the query wraps
+// theta by the true turn (at 1e15 rad, the double nearest 2pi put it 0.04 rad away).
+TEST(SpaceQuery, AFarOrientationIsAnsweredAtItsTrueWrappedAngle) {
+  const Pair pair = testkit::load_example("knee");
+  const SlicedSpace space = space_of(pair);
+  SpaceQuery q(pair, space);
+  std::mt19937 rng(31);
+  const Box box = query_box(space);
+  std::uniform_real_distribution<double> ux(box.lo.x, box.hi.x), uy(box.lo.y, box.hi.y);
+  int differing = 0;
+  for (double far : {1e15, -3e13}) {
+    const double wrapped = std::atan2(std::sin(far), std::cos(far));
+    for (int i = 0; i < 2000; ++i) {
+      const double x = ux(rng), y = uy(rng);
+      const QueryAnswer a = q.query({x, y, far}), b = q.query({x, y, wrapped});
+      if (a.placement != b.placement || a.component != b.component) ++differing;
+    }
+  }
+  EXPECT_EQ(differing, 0);
+}
+
 // The tip of a thin free pocket (stress seed 100050): a configuration 0.0078 from the
 // pocket's corner, within the contact tolerance 0.0086, is blocked by classify and stays
 // blocked 2 tolerances away in all eight probe directions; the query's contact answer is

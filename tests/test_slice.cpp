@@ -312,6 +312,30 @@ TEST(SliceInvariance, SymmetricFixturePartGivesTheSameSliceAHalfTurnLater) {
   }
 }
 
+// An orientation outside [-pi, pi) is the same placement as its wrapped angle, however far:
+// the contact segments add theta to the features' normal angles, and at 1e9 rad those sums
+// kept 1.2e-7 rad of them, a hundred times the angular tolerance; the fixture's slice there
+// had no free space at all. Each far slice matches the one at the angle std::sin and
+// std::cos reduce it to, and its samples are free by the direct test at the far angle.
+TEST(SliceInvariance, AFarOrientationGivesTheSliceOfItsWrappedAngle) {
+  for (const char* name : {"knee", "fixture", "fastener"}) {
+    const Pair pair = load_example(name);
+    PlacementTester tester(pair);
+    for (double far : {4.0, -7.5, 1e9, -1e12, 1e15}) {
+      const std::string what = std::string(name) + " at " + std::to_string(far);
+      const double wrapped = std::atan2(std::sin(far), std::cos(far));
+      const Slice s = compute_slice(pair, far);
+      EXPECT_GE(s.theta, -kPi) << what;
+      EXPECT_LT(s.theta, kPi) << what;
+      EXPECT_NEAR(s.theta, wrapped, 1e-12) << what;
+      expect_same_summary(s, compute_slice(pair, wrapped), what);
+      EXPECT_FALSE(s.free_components.empty()) << what;
+      for (const FreeComponent& c : s.free_components)
+        EXPECT_EQ(tester.classify({c.sample.x, c.sample.y, far}), Placement::free) << what;
+    }
+  }
+}
+
 TEST(SliceInvariance, MovingTheWholeSceneKeepsEverySlice) {
   // Rotating both parts about the origin by phi rotates every slice by phi; translating both
   // (the moving part within its body frame) shifts it. Counts and areas are unchanged.

@@ -83,7 +83,7 @@ struct DegenerateContact {
 };
 
 struct Slice {
-  double theta = 0.0;
+  double theta = 0.0;  // the orientation asked for, in [-pi, pi) (principal_angle)
   std::vector<ContactSegment> contact_segments;
   std::vector<FreeComponent> free_components;
   // Every realizable piece of positive length: free-space boundary and sliding fits.
@@ -109,9 +109,10 @@ struct Slice {
 // Contact segments of every compatible feature pair at theta, after local overlap filtering.
 std::vector<ContactSegment> contact_segments(const Pair& pair, double theta);
 
-// The whole slice at theta. Thread-safe; the calling thread keeps the working buffers for its
-// next call (released after a slice of more than 20,000 contact segments). For many slices of
-// one pair, a Slicer also keeps the pair's contact data.
+// The whole slice at theta (any finite angle: one outside [-pi, pi) is wrapped there, by the
+// true turn when it is far, as std::sin and std::cos take it). Thread-safe; the calling thread
+// keeps the working buffers for its next call (released after a slice of more than 20,000 contact
+// segments). For many slices of one pair, a Slicer also keeps the pair's contact data.
 Slice compute_slice(const Pair& pair, double theta);
 
 // Ids of the realizable contact segments, sorted, each once: the contact graph's nodes, plus

@@ -6,6 +6,11 @@
 namespace cslice {
 
 double wrap_angle(double a) {
+  constexpr double kFarAngle = 1000.0 * kTwoPi;
+  if (std::fabs(a) > kFarAngle) {
+    const double r = std::atan2(std::sin(a), std::cos(a));  // in [-pi, pi]
+    return r >= kPi ? -kPi : r;
+  }
   a = fmod_two_pi(a + kPi);
   if (a < 0.0) a += kTwoPi;
   return a - kPi;

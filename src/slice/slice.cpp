@@ -60,7 +60,7 @@ class SliceBuilder {
       : pair_(pair),
         contacts_(contacts),
         tester_(tester),
-        theta_(theta),
+        theta_(principal_angle(theta)),
         blocked_(scratch.blocked),
         samples_(scratch.samples),
         realizable_(scratch.realizable),
