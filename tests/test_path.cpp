@@ -14,6 +14,7 @@
 #include "cslice/classify.hpp"
 #include "cslice/query.hpp"
 #include "cslice/space.hpp"
+#include "path/certify.hpp"
 #include "support/examples.hpp"
 #include "support/free_poses.hpp"
 #include "support/random_parts.hpp"
@@ -216,6 +217,36 @@ TEST(Path, FastenerPinGoesInThroughTheSlot) {
     if (std::fabs(p.y - 0.75) < 0.5 && std::fabs(std::fabs(p.theta) - kPi / 2) < 0.4)
       vertical_in_slot = true;
   EXPECT_TRUE(vertical_in_slot);
+}
+
+// A start at a far orientation is the same placement as its principal angle, and gets the path
+// planned from there: the carries add their steps to the start's theta, and at 1e15 rad
+// those sums were rounded to an eighth of a radian (no path was found).
+TEST(Path, AFarStartOrientationPlansFromItsPrincipalAngle) {
+  const Pair pair = testkit::load_example("fastener");
+  const SlicedSpace space = space_of(pair);
+  PathPlanner planner(pair, space);
+  const double far = 1e15, wrapped = std::atan2(std::sin(far), std::cos(far));
+  const Pose out{0.0, 6.0, wrapped}, in{0.0, -3.0, 0.0};
+  const PathResult r = planner.plan({out.x, out.y, far}, in);
+  Checked checked;
+  expect_valid_path(pair, r, out, in, "fastener from 1e15 rad", checked);
+  EXPECT_EQ(r.poses.size(), planner.plan(out, in).poses.size());
+}
+
+// A step's certificate allows for the round-off of the magnitudes in play. From a start at
+// x = 1e300 the clearance and the sweep to a goal behind the fastener's wall are the same
+// double, and the bare test certified the straight motion through the wall; the planner
+// returned that one step as the path.
+TEST(PathCertificate, AStepFromFarOutIsNotCertifiedThroughAWall) {
+  const Pair pair = testkit::load_example("fastener");
+  path_detail::Certifier cert(pair, 1000);
+  const Pose far_out{1e300, -3.0, 0.0}, in{0.0, -3.0, 0.0};
+  const std::optional<path_detail::Waypoint> a = cert.evaluate(far_out), b = cert.evaluate(in);
+  ASSERT_TRUE(a && b);
+  EXPECT_FALSE(cert.step_ok(*a, *b));
+  const PathResult r = find_path(pair, space_of(pair), far_out, in);
+  EXPECT_TRUE(r.status != PathStatus::found || r.poses.size() > 2) << r.poses.size();
 }
 
 TEST(Path, SquarePegInsideAndOutsideAreDifferentComponents) {

@@ -53,6 +53,7 @@ class Certifier {
 
   PlacementTester tester_;
   double reach_ = 0.0, floor_ = 0.0;
+  double scene_ = 0.0;  // the pair's size: round-off in placing the parts is relative to it
   long evaluations_ = 0, max_evaluations_ = 0;
 };
 

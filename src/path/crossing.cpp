@@ -13,6 +13,7 @@
 #include <deque>
 #include <limits>
 
+#include "parts/validate.hpp"
 #include "path/planner.hpp"
 
 namespace cslice {
@@ -173,7 +174,7 @@ bool PathPlanner::Impl::cross(Path& path, int from_cell, const Hop& hop) {
   }
   if (reached < 0)
     return fail("no certified way through critical orientation " + std::to_string(t.critical) +
-                " (theta " + std::to_string(t.theta) + ")");
+                " (theta " + detail::format_number(t.theta) + ")");
   // The relations from the source to the target, in order.
   std::vector<int> chain;
   for (int at = reached; parent[at].second != -1;) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "parts/validate.hpp"
 #include "path/planner.hpp"
 
 namespace cslice {
@@ -30,6 +31,12 @@ constexpr long kSliceRouteBudget = 400;
 // Stored slices this close in theta (radians) to a requested one stand in for it: the same
 // orientation up to the round-off of the sums that produced the two values.
 constexpr double kSameTheta = 1e-12;
+
+// "at (x, y) past theta t", for a carry that stops.
+std::string where_turning(const Pose& p) {
+  return "at " + detail::format_point({p.x, p.y}) + " past theta " +
+         detail::format_number(wrap_angle(p.theta));
+}
 
 }  // namespace
 
@@ -98,17 +105,13 @@ bool PathPlanner::Impl::carry(Path& path, double target) {
         std::min(kMaxCarryStep, 0.5 * (cur.clearance - cert.floor()) / cert.reach());
     // Steps shrinking towards nothing: the free space narrows to the contact tolerance.
     if (step < pair.tol.critical_angle)
-      return fail("the clearance vanishes turning at (" + std::to_string(cur.pose.x) + ", " +
-                  std::to_string(cur.pose.y) + ") past theta " +
-                  std::to_string(wrap_angle(cur.pose.theta)));
+      return fail("the clearance vanishes turning " + where_turning(cur.pose));
     const double remaining = target - cur.pose.theta;
     Pose next = cur.pose;
     next.theta =
         std::fabs(remaining) <= step ? target : cur.pose.theta + std::copysign(step, remaining);
     if (!cert.straight(cur, next, path, kStepBudget))
-      return fail("cannot turn at (" + std::to_string(cur.pose.x) + ", " +
-                  std::to_string(cur.pose.y) + ") past theta " +
-                  std::to_string(wrap_angle(cur.pose.theta)));
+      return fail("cannot turn " + where_turning(cur.pose));
     ++stats.rotation_steps;
     cur = path.back();
     // Margins above the floor, not clearances, decide: the steps are proportional to them.
@@ -181,7 +184,7 @@ bool PathPlanner::Impl::connect_in_slice(Path& path, Vec2 q, const Slice* guide,
   const Slice& s = guide ? *guide : slice_at(theta);
   const int cp = s.locate(p), cq = s.locate(q);
   if (cp < 0 || cp != cq)
-    return fail("the slice at theta " + std::to_string(wrap_angle(theta)) +
+    return fail("the slice at theta " + detail::format_number(wrap_angle(theta)) +
                 " does not put both points in one free component");
   path_detail::TrapezoidMap& map = map_of(s, cp, p, q);
   std::vector<char> banned(map.door_count(), 0);
@@ -212,7 +215,7 @@ bool PathPlanner::Impl::connect_in_slice(Path& path, Vec2 q, const Slice* guide,
   path.resize(mark);
   if (budget >= 0) return false;  // the caller has another way
   return fail("no certified route inside the free component of the slice at theta " +
-              std::to_string(wrap_angle(theta)));
+              detail::format_number(wrap_angle(theta)));
 }
 
 // A free component of a side slice can be a thin part of its cell (the fastener's slot just

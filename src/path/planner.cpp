@@ -255,7 +255,11 @@ Path PathPlanner::Impl::shortcut(const Path& in) {
   return out;
 }
 
-PathResult PathPlanner::Impl::plan(const Pose& from, const Pose& to) {
+PathResult PathPlanner::Impl::plan(const Pose& from_asked, const Pose& to_asked) {
+  // Far orientations as their principal angles: the motions add steps to the start's theta,
+  // and at 1e15 rad those sums were rounded to an eighth of a radian.
+  const Pose from{from_asked.x, from_asked.y, principal_angle(from_asked.theta)};
+  const Pose to{to_asked.x, to_asked.y, principal_angle(to_asked.theta)};
   // Slices, their trapezoid maps and the cells' components at side slices depend only on the
   // space: kept for later queries (side slices are needed again and again), up to a bound.
   if (computed.size() > kMaxCachedSlices) {
