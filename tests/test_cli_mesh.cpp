@@ -95,7 +95,8 @@ TEST_F(MeshCli, BadArgumentsExitTwoAndWriteNothing) {
   for (const std::string& args :
        {std::string("-o ") + testkit::quoted((dir_ / "m.xyz").string()),
         std::string("-o ") + testkit::quoted((dir_ / "m.obj").string()) + " --box 1,1,0,0",
-        std::string("-o ") + testkit::quoted((dir_ / "m.obj").string()) + " --theta a,b"}) {
+        std::string("-o ") + testkit::quoted((dir_ / "m.obj").string()) + " --theta a,b",
+        std::string("-o ") + testkit::quoted((dir_ / "m.obj").string()) + " --threads -2"}) {
     const testkit::RunResult r = mesh(s, args);
     EXPECT_EQ(r.status, 2) << args;
     EXPECT_FALSE(r.err.empty()) << args;

@@ -300,6 +300,26 @@ TEST_F(SpaceCli, ThreadCountChangesOnlyTheTiming) {
   EXPECT_EQ(ja.dump(), jb.dump());
 }
 
+// More threads than cores are as many as cores: the same space, and nothing on standard
+// error. oneTBB warned there ("the number of workers is currently limited") and crashed when
+// asked for more than 65,536 (`--threads 100000`).
+TEST_F(SpaceCli, MoreThreadsThanCoresComputeTheSameSpaceQuietly) {
+  const std::string one = (dir_ / "one.json").string();
+  ASSERT_EQ(compute(testkit::example_path("cam"), one, "--threads 1").status, 0);
+  nlohmann::json expected = nlohmann::json::parse(testkit::read_file(one));
+  expected.erase("timing");
+  for (const char* threads : {"64", "100000"}) {
+    const std::string many = (dir_ / (std::string(threads) + ".json")).string();
+    const testkit::RunResult r =
+        compute(testkit::example_path("cam"), many, std::string("--threads ") + threads);
+    ASSERT_EQ(r.status, 0) << threads;
+    EXPECT_EQ(r.err, "") << threads;
+    nlohmann::json got = nlohmann::json::parse(testkit::read_file(many));
+    got.erase("timing");
+    EXPECT_EQ(got.dump(), expected.dump()) << threads;
+  }
+}
+
 // --from-scratch computes every slice (none evaluated from its interval's structure): the
 // same slices by their summaries and the same topology; only the count of evaluated side
 // slices tells them apart.

@@ -81,8 +81,8 @@ struct CriticalOptions {
   // fixed one deeper than the criticality tolerance), where a slice's realizable contact
   // cannot change. Off, every solution that survives local overlap filtering is kept.
   bool screen_blocked = true;
-  // Threads at once (oneTBB); 0 lets oneTBB choose (every core). The result is the same
-  // whatever the count.
+  // Threads at once (oneTBB); 0 lets oneTBB choose (every core), and more than the cores
+  // are as many as the cores. The result is the same whatever the count.
   int threads = 0;
   // For a pair with symmetries (include/cslice/symmetry.hpp), search only a fundamental
   // domain of theta and add the images of what is found there (docs/symmetry.md); false

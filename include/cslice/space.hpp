@@ -157,7 +157,7 @@ using ProgressReport =
 
 struct SpaceOptions {
   CriticalOptions critical;
-  int threads = 0;          // slices computed at once; 0 lets oneTBB choose (every core)
+  int threads = 0;          // slices computed at once; 0 (or more than the cores): every core
   ProgressReport progress;  // optional
   // Side slices and sample rules at every critical orientation, even where the component
   // counts decide the joins, each side slice checked against its interval's representative:

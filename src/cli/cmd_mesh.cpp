@@ -41,6 +41,7 @@ void run(const MeshCommand& cmd) {
   const bool stl = ends_with(cmd.out_path, ".stl");
   if (!writer && !stl)
     throw ExitError(kExitBadInput, "-o: the output must end in .obj, .ply or .stl");
+  if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
   const MeshOptions options = mesh_options(cmd);
   const LoadSpaceResult loaded = load_space_or_exit(cmd.space_path, cmd.threads);
   const ContactMesh mesh = contact_mesh(*loaded.pair, *loaded.space, options);

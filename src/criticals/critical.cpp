@@ -33,6 +33,7 @@
 #include "criticals/symmetric.hpp"
 #include "cslice/classify.hpp"
 #include "cslice/critical.hpp"
+#include "parallel/arena.hpp"
 
 namespace cslice {
 
@@ -777,7 +778,7 @@ class CriticalFinder {
 
 CriticalSet critical_orientations(const Pair& pair, const CriticalOptions& options) {
   if (options.threads <= 0) return CriticalFinder(pair, options).run();
-  tbb::task_arena arena(options.threads);
+  tbb::task_arena arena(arena_threads(options.threads));
   return arena.execute([&] {
     // A new arena's other threads join it only once it has work, some 40 microseconds later:
     // an empty task, spawned first, calls them in while the context starts.

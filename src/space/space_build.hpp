@@ -13,6 +13,7 @@
 
 #include "contacts/contact_features.hpp"
 #include "cslice/space.hpp"
+#include "parallel/arena.hpp"
 #include "slice/boundary_model.hpp"
 
 namespace cslice::detail {
@@ -59,7 +60,7 @@ template <class Worker>
 void for_each_index_parallel(const Pair& pair, size_t count, int threads,
                              const std::function<void(size_t, Worker&)>& run) {
   tbb::enumerable_thread_specific<Worker> workers(&pair);
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  tbb::task_arena arena(arena_threads(threads));
   // Grain 1: slices differ widely in cost, so let the scheduler balance single ones.
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 1), [&](const auto& range) {
