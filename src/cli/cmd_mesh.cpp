@@ -1,7 +1,9 @@
-// `cslice mesh SPACE.json -o contact.obj|.ply|.stl [--theta A,B] [--box X0,Y0,X1,Y1]`: the
-// contact surface of a computed space as triangles (include/cslice/mesh.hpp), whole or in
-// part (paper section 2.5). The format follows the output's extension.
+// `cslice mesh SPACE.json -o contact.obj|.ply|.stl [--theta A,B] [--box X0,Y0,X1,Y1]
+// [--tolerance T]`: the contact surface of a computed space as triangles (include/cslice/mesh.hpp),
+// whole or in part (paper section 2.5). The format follows the output's extension.
+#include <cmath>
 #include <memory>
+#include <optional>
 
 #include "cli/commands.hpp"
 #include "cslice/mesh.hpp"
@@ -15,6 +17,7 @@ struct MeshCommand {
   std::string out_path;
   std::string theta_range;
   std::string box;
+  std::optional<double> tolerance;  // unset: the pair's contact tolerance
   int threads = 0;
 };
 
@@ -31,6 +34,7 @@ MeshOptions mesh_options(const MeshCommand& cmd) {
     options.theta_to = to >= kPi ? kPi : wrap_angle(to);
   }
   if (!cmd.box.empty()) options.box = parse_box_or_exit(cmd.box, "--box");
+  options.chord_tolerance = options.interpolation_tolerance = cmd.tolerance.value_or(0.0);
   return options;
 }
 
@@ -42,6 +46,8 @@ void run(const MeshCommand& cmd) {
   if (!writer && !stl)
     throw ExitError(kExitBadInput, "-o: the output must end in .obj, .ply or .stl");
   if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
+  if (cmd.tolerance && !(std::isfinite(*cmd.tolerance) && *cmd.tolerance > 0.0))
+    throw ExitError(kExitBadInput, "--tolerance: expected a positive length");
   const MeshOptions options = mesh_options(cmd);
   const LoadSpaceResult loaded = load_space_or_exit(cmd.space_path, cmd.threads);
   const ContactMesh mesh = contact_mesh(*loaded.pair, *loaded.space, options);
@@ -61,6 +67,11 @@ void register_mesh(CLI::App& app) {
   sub->add_option("--theta", cmd->theta_range,
                   "Clip the surface to theta in A,B (radians; A > B wraps through pi)");
   sub->add_option("--box", cmd->box, "Clip the surface to (x, y) in the box X0,Y0,X1,Y1");
+  sub->add_option("--tolerance", cmd->tolerance,
+                  "How far chords may cut arcs, and the surface between slices stray beyond "
+                  "them (default: the pair's contact tolerance; docs/mesh.md, The bound). A "
+                  "pair computed to a fine tolerance makes a large mesh: a coarser one here "
+                  "makes a smaller one");
   sub->add_option("--threads", cmd->threads, "Slices recomputed at once (default: every core)");
   sub->callback([cmd] { run(*cmd); });
 }
