@@ -104,6 +104,14 @@ inline constexpr double kRelativeSymmetrySlack = 1e-12;
 // 130); 10,000 (about 1,300), 40 of 200 random pairs. The failures are fits and slivers that
 // the slices resolve only to the coarser epsilon, over wider angles than the checks allow.
 inline constexpr double kPlacementCoarseningWarning = 10.0;
+// A path step is certified when its sweep stays below the clearances at its ends less twice
+// the contact tolerance (docs/path.md, The certificate). Those clearances and the sweep are
+// rounded relative to the magnitudes in play (the pair's size, the sweep, the clearances, the
+// ends' coordinates), so this much of their sum comes off the margin too: a thousand times
+// the relative error of the few operations behind them. Far out that matters: from a start at
+// x = 1e300 the clearance and the sweep to a goal behind a wall were the same double, and the
+// bare test certified the straight motion through the wall.
+inline constexpr double kPathRelativeRounding = 1e-12;
 
 struct Tolerances {
   // Length unit of the pair file (mm, in, ...). Base value everything scales with.

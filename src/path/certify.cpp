@@ -34,12 +34,6 @@ constexpr int kMaxDepth = 48;
 constexpr double kFloorMargin = 1e-3;
 // The largest turn of one step: the short way round must be the turn made.
 constexpr double kMaxStepTurn = kPi / 4;
-// Round-off allowed for, relative to the magnitudes in play (a thousand times the relative
-// error of the few operations behind a clearance and a sweep). Far from the parts it exceeds
-// their whole margin: from a start at x = 1e300, where the clearance and the sweep to a goal
-// behind a wall are both 1e300 as doubles, the bare test certified the straight motion
-// through the wall.
-constexpr double kRoundingAllowance = 1e-12;
 
 }  // namespace
 
@@ -64,10 +58,10 @@ bool Certifier::step_ok(const Waypoint& a, const Waypoint& b) const {
   if (turn > kMaxStepTurn) return false;
   const double sweep = std::hypot(b.pose.x - a.pose.x, b.pose.y - a.pose.y) + reach_ * turn;
   // Placements far out are rounded to their coordinates' last place, and so are the
-  // clearances measured there.
+  // clearances measured there (kPathRelativeRounding).
   const double magnitude = scene_ + sweep + a.clearance + b.clearance + std::fabs(a.pose.x) +
                            std::fabs(a.pose.y) + std::fabs(b.pose.x) + std::fabs(b.pose.y);
-  return sweep < a.clearance + b.clearance - 2.0 * floor_ - kRoundingAllowance * magnitude;
+  return sweep < a.clearance + b.clearance - 2.0 * floor_ - kPathRelativeRounding * magnitude;
 }
 
 bool Certifier::follow(const Motion& motion, const Waypoint& a, Path& out, long budget) {
