@@ -3,6 +3,7 @@
 // and `cslice stats` commands.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -221,6 +222,27 @@ TEST(Space, SameJsonWhateverTheThreadCount) {
     const std::string two = space_to_json(pair, compute_space(pair, with_threads(2)), false);
     EXPECT_EQ(one, two) << name;
     EXPECT_EQ(one.find("timing"), std::string::npos) << name;
+  }
+}
+
+// The file is written a slice and a correspondence at a time, not as one document (which
+// took more memory than the space itself); its text is still exactly that document's dump.
+TEST(Space, TheFileIsTheDumpOfOneDocument) {
+  for (const char* name : {"knee", "fastener"}) {
+    const Pair pair = testkit::load_example(name);
+    const SlicedSpace space = compute_space(pair, with_threads(2));
+    const std::string text = space_to_json(pair, space, true);
+    const nlohmann::ordered_json document = nlohmann::ordered_json::parse(text);
+    // Compared by the first difference: a diff of two texts this long would take minutes.
+    const std::string dumped = document.dump(2) + "\n";
+    const size_t differ =
+        std::mismatch(dumped.begin(), dumped.end(), text.begin(), text.end()).first -
+        dumped.begin();
+    EXPECT_TRUE(dumped == text) << name << ": first difference at byte " << differ << ": '"
+                                << text.substr(differ, 40) << "' instead of '"
+                                << dumped.substr(differ, 40) << "'";
+    EXPECT_EQ(document["slices"].size(), space.slices.size()) << name;
+    EXPECT_EQ(document["correspondence"].size(), space.correspondence.size()) << name;
   }
 }
 

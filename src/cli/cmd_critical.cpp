@@ -65,7 +65,7 @@ void run(const CriticalCommand& cmd) {
     std::cout << table_text(pair, set, ms) << std::flush;
     return;
   }
-  deliver_outputs({{cmd.json_path, critical_set_to_json(pair, set)}});
+  deliver_output(cmd.json_path, critical_set_to_json(pair, set));
 }
 
 }  // namespace

@@ -51,7 +51,7 @@ void run(const MeshCommand& cmd) {
   const MeshOptions options = mesh_options(cmd);
   const LoadSpaceResult loaded = load_space_or_exit(cmd.space_path, cmd.threads);
   const ContactMesh mesh = contact_mesh(*loaded.pair, *loaded.space, options);
-  deliver_outputs({{cmd.out_path, stl ? mesh_to_stl(mesh, loaded.pair->name) : writer(mesh)}});
+  deliver_output(cmd.out_path, stl ? mesh_to_stl(mesh, loaded.pair->name) : writer(mesh));
 }
 
 }  // namespace

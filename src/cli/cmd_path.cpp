@@ -125,7 +125,7 @@ void run(const PathCommand& cmd) {
   } else {
     text = message + "\n";
   }
-  deliver_outputs({{cmd.output, text}});
+  deliver_output(cmd.output, std::move(text));
   if (r.status != PathStatus::found)
     throw ExitError(1, cmd.output == kStdout ? "" : message);  // the answer is the output
 }

@@ -40,7 +40,7 @@ void run(const QueryCommand& cmd) {
         break;
     }
   }
-  deliver_outputs({{kStdout, out}});
+  deliver_output(kStdout, std::move(out));
 }
 
 }  // namespace

@@ -31,6 +31,9 @@ inline constexpr const char* kStdout = "-";
 // Writes every (path, text) output, or none: files go to temporaries renamed into place once
 // all were written, and standard output ("-") comes last. Throws ExitError(2) on failure.
 void deliver_outputs(std::vector<std::pair<std::string, std::string>> outputs);
+// The same for one output, moved in: a braced list would copy the text (a space file of a
+// larger pair is a gigabyte).
+void deliver_output(const std::string& path, std::string text);
 
 // Loads a pair file or throws ExitError(2) with the reader's message.
 Pair load_pair_or_exit(const std::string& path);

@@ -50,11 +50,17 @@ void deliver_outputs(std::vector<std::pair<std::string, std::string>> outputs) {
   std::string to_stdout;
   std::erase_if(outputs, [&](const auto& o) {
     if (o.first != kStdout) return false;
-    to_stdout = o.second;
+    to_stdout = std::move(o.second);
     return true;
   });
   write_files(outputs);
   std::cout << to_stdout << std::flush;
+}
+
+void deliver_output(const std::string& path, std::string text) {
+  std::vector<std::pair<std::string, std::string>> outputs;
+  outputs.emplace_back(path, std::move(text));
+  deliver_outputs(std::move(outputs));
 }
 
 }  // namespace cslice::cli

@@ -1,9 +1,12 @@
 // The sliced space as JSON (docs/space-format.md): the pair itself, in the pair-file format,
 // and per slice a summary, not the whole slice (`cslice slice` gives that, and the reader
 // recomputes it), so the file stays small enough to read back quickly.
+#include <tbb/parallel_for.h>
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
 
 #include "cslice/space.hpp"
 
@@ -109,15 +112,12 @@ json slice_json(const SpaceSlice& s) {
           {"contact_graph_edges", s.slice.contact_graph.edges.size()}};
 }
 
-json correspondence_json(const std::vector<SliceCorrespondence>& list) {
-  json out = json::array();
-  for (const SliceCorrespondence& c : list)
-    out.push_back({{"from", c.from},
-                   {"to", c.to},
-                   {"kept", labels_json(c.kept)},
-                   {"appearing", labels_json(c.appearing)},
-                   {"vanishing", labels_json(c.vanishing)}});
-  return out;
+json correspondence_json(const SliceCorrespondence& c) {
+  return {{"from", c.from},
+          {"to", c.to},
+          {"kept", labels_json(c.kept)},
+          {"appearing", labels_json(c.appearing)},
+          {"vanishing", labels_json(c.vanishing)}};
 }
 
 json counts_json(const SlicedSpace& space) {
@@ -204,6 +204,49 @@ json topology_json(const SpaceTopology& topo) {
             {"problems", k.problems}}}};
 }
 
+// The two long arrays, slices and correspondence, stand as placeholders in the document until
+// their text replaces them, written one element's document at a time. A document of every
+// element took more memory than the space itself and most of the time spent writing it.
+constexpr const char* kSlicesPlaceholder = "\x01slices\x01";
+constexpr const char* kCorrespondencePlaceholder = "\x01correspondence\x01";
+
+// The array as `dump(2)` lays out a top-level key's array: each element indented by 4, the
+// closing bracket by 2. Elements are independent, so blocks of them are laid out in parallel
+// (a fixed order of appending keeps the text the same), one block's text in memory at a time.
+template <class T, class ToJson>
+void append_array(const std::vector<T>& items, ToJson to_json, std::string& text) {
+  if (items.empty()) {
+    text += "[]";
+    return;
+  }
+  constexpr size_t kBlock = 512;
+  std::vector<std::string> laid(std::min(kBlock, items.size()));
+  text += "[";
+  for (size_t first = 0; first < items.size(); first += kBlock) {
+    const size_t count = std::min(kBlock, items.size() - first);
+    tbb::parallel_for(size_t(0), count, [&](size_t k) {
+      const std::string element = to_json(items[first + k]).dump(2);
+      std::string& out = laid[k];
+      out.clear();
+      out += first + k == 0 ? "\n    " : ",\n    ";
+      for (const char c : element) {
+        out += c;
+        if (c == '\n') out += "    ";
+      }
+    });
+    for (size_t k = 0; k < count; ++k) text += laid[k];
+  }
+  text += "\n  ]";
+}
+
+// Appends `document` up to `placeholder` (a string value in it) and removes that part.
+void append_until(std::string_view& document, const char* placeholder, std::string& text) {
+  const std::string quoted = json(placeholder).dump();
+  const size_t at = document.find(quoted);
+  text.append(document.substr(0, at));
+  document.remove_prefix(at + quoted.size());
+}
+
 }  // namespace
 
 std::string pair_file_text(const Pair& pair) {
@@ -222,15 +265,22 @@ std::string space_to_json(const Pair& pair, const SlicedSpace& space, bool with_
                 {"critical_angle", pair.tol.critical_angle}}},
               {"interpolation", {{"reach", space.reach}, {"max_step", space.max_step}}},
               {"critical_orientations", criticals_json(space.criticals)},
-              {"slices", json::array()},
-              {"correspondence", correspondence_json(space.correspondence)},
+              {"slices", kSlicesPlaceholder},
+              {"correspondence", kCorrespondencePlaceholder},
               {"topology", topology_json(space.topology)},
               {"counts", counts_json(space)}};
-  for (const SpaceSlice& s : space.slices) out["slices"].push_back(slice_json(s));
   if (with_timing)
     out["timing"] = {{"criticals_seconds", space.seconds_criticals},
                      {"slices_seconds", space.seconds_slices}};
-  return out.dump(2) + "\n";
+  const std::string skeleton = out.dump(2) + "\n";
+  std::string_view rest = skeleton;
+  std::string text;
+  append_until(rest, kSlicesPlaceholder, text);
+  append_array(space.slices, slice_json, text);
+  append_until(rest, kCorrespondencePlaceholder, text);
+  append_array(space.correspondence, correspondence_json, text);
+  text.append(rest);
+  return text;
 }
 
 }  // namespace cslice
