@@ -504,5 +504,25 @@ TEST_F(QueryCli, GoodFileAnswers) {
   EXPECT_EQ(r.out.rfind("free", 0), 0u) << r.out;
 }
 
+// The correspondence's entries are counted as they are parsed and dropped, not kept: one entry
+// more or less, or a value that is not an array, is still named.
+TEST(SpaceReader, TheCorrespondenceIsCountedAsItIsRead) {
+  const LoadSpaceResult untouched = parse_edited([](ojson&) {});
+  ASSERT_TRUE(untouched.ok()) << untouched.error->message();
+  EXPECT_EQ(untouched.space->correspondence.size(), untouched.space->slices.size());
+  expect_error_mentions(parse_edited([](ojson& j) {
+                          j["correspondence"].push_back({{"from", 0}});
+                        }),
+                        "field \"correspondence\": the file says");
+  expect_error_mentions(parse_edited([](ojson& j) { j["correspondence"].erase(0); }),
+                        "field \"correspondence\": the file says");
+  expect_error_mentions(parse_edited([](ojson& j) {
+                          j["correspondence"] = {{"a", 1}};
+                        }),
+                        "field \"correspondence\": must be an array, got object");
+  expect_error_mentions(parse_edited([](ojson& j) { j.erase("correspondence"); }),
+                        "correspondence");
+}
+
 }  // namespace
 }  // namespace cslice

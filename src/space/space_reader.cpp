@@ -122,11 +122,28 @@ void expect_count(const std::string& field, long long stored, long long recomput
                           ": the file was edited or written by another version");
 }
 
-json parse_text(std::string_view text) {
+// The correspondence's entries are only counted (the reader recomputes the correspondence
+// from the slices): each is dropped as soon as it is parsed. Kept, they made half of a large
+// file's document in memory.
+json parse_text(std::string_view text, long long& correspondence_entries) {
   // Far deeper than a valid file (7 levels) would overflow the stack where values are dumped.
   if (std::optional<std::string> why = detail::json_nesting_error(text)) fail(*why);
+  std::string top_key;  // the top-level key whose value is being parsed
+  const auto drop_entries = [&](int depth, json::parse_event_t event, json& parsed) {
+    if (depth == 1 && event == json::parse_event_t::key) {
+      top_key = parsed.get<std::string>();
+      if (top_key == "correspondence") correspondence_entries = 0;  // the last one counts
+      return true;
+    }
+    const bool entry_parsed = event == json::parse_event_t::object_end ||
+                              event == json::parse_event_t::array_end ||
+                              event == json::parse_event_t::value;
+    if (depth != 2 || !entry_parsed || top_key != "correspondence") return true;
+    ++correspondence_entries;
+    return false;
+  };
   try {
-    return json::parse(text.begin(), text.end());
+    return json::parse(text.begin(), text.end(), drop_entries);
   } catch (const json::parse_error& e) {
     // what() reads "[json.exception.parse_error.101] parse error at line L, column C: why".
     const std::string what = e.what();
@@ -300,7 +317,7 @@ void check_slice(const json& stored, size_t i, const SpaceSlice& s, const Pair& 
                static_cast<long long>(slice.contact_graph.edges.size()), at);
 }
 
-void check_topology(const json& top, const SlicedSpace& space) {
+void check_topology(const json& top, const SlicedSpace& space, long long correspondence_entries) {
   const json& topo = require(top, "", "topology");
   const SpaceTopology& t = space.topology;
   expect_count("topology.free_components_3d", integer_field(topo, "topology", "free_components_3d"),
@@ -315,8 +332,8 @@ void check_topology(const json& top, const SlicedSpace& space) {
   if (stored != json(t.slice_components))
     fail_field("topology.slice_components",
                "differ from the recomputed 3D components of the slices' free components");
-  const json& correspondence = require_array(top, "", "correspondence");
-  expect_count("correspondence", static_cast<long long>(correspondence.size()),
+  require_array(top, "", "correspondence");  // its entries were counted and dropped
+  expect_count("correspondence", correspondence_entries,
                static_cast<long long>(space.correspondence.size()), " entries");
 }
 
@@ -331,7 +348,8 @@ void check_counts(const json& top, const SlicedSpace& space) {
                static_cast<long long>(space.slices.size()));
 }
 
-SlicedSpace read_space(const json& top, const Pair& pair, int threads) {
+SlicedSpace read_space(const json& top, long long correspondence_entries, const Pair& pair,
+                       int threads) {
   SlicedSpace space;
   space.criticals = read_criticals(top, pair);
   const json& interpolation = require(top, "", "interpolation");
@@ -354,7 +372,7 @@ SlicedSpace read_space(const json& top, const Pair& pair, int threads) {
   for (size_t i = 0; i < stored.size(); ++i) check_slice(stored[i], i, space.slices[i], pair);
   space.correspondence = detail::slice_correspondences(space.slices);
   space.topology = detail::compute_topology(pair, space, {threads, false, true}, &models);
-  check_topology(top, space);
+  check_topology(top, space, correspondence_entries);
   check_counts(top, space);
   if (const auto it = top.find("timing"); it != top.end() && it->is_object()) {
     // Optional, but a value of another type is named (json::value would throw type_error).
@@ -373,10 +391,11 @@ SlicedSpace read_space(const json& top, const Pair& pair, int threads) {
 LoadSpaceResult parse_space(std::string_view json_text, std::string_view source, int threads) {
   LoadSpaceResult result;
   try {
-    const json top = parse_text(json_text);
+    long long correspondence_entries = 0;
+    const json top = parse_text(json_text, correspondence_entries);
     check_format(top);
     Pair pair = read_pair(top);
-    result.space = read_space(top, pair, threads);
+    result.space = read_space(top, correspondence_entries, pair, threads);
     result.pair = std::move(pair);
   } catch (const ReadFailure& f) {
     result.error = InputError{"", "", -1, -1, f.reason};
