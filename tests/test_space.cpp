@@ -17,6 +17,7 @@
 #include "support/completeness.hpp"
 #include "support/examples.hpp"
 #include "support/random_parts.hpp"
+#include "support/random_polygons.hpp"
 
 using namespace cslice;
 
@@ -340,6 +341,24 @@ TEST_F(SpaceCli, MoreThreadsThanCoresComputeTheSameSpaceQuietly) {
     got.erase("timing");
     EXPECT_EQ(got.dump(), expected.dump()) << threads;
   }
+}
+
+// Out of memory is said as such, exit 3 and no file: a pair too large for the machine (here a
+// 600-feature star pair, which needs about 4 GB, with 300 MB allowed) was reported as
+// "internal error: std::bad_alloc".
+TEST_F(SpaceCli, OutOfMemoryIsSaidAndWritesNothing) {
+  std::mt19937 rng(2176);
+  const testkit::StarPairLoops star = testkit::lobed_star_pair(rng, 150, 0.0, 0.0);
+  const std::filesystem::path pair = dir_ / "star.json", out = dir_ / "star-space.json";
+  testkit::write_file(pair, testkit::pair_json("star", {star.moving}, {star.fixed}));
+  const testkit::RunResult r = testkit::run_cli_with_memory_limit(
+      // One thread: no worker stacks to count against the limit, whatever the machine.
+      "compute " + testkit::quoted(pair.string()) + " -o " + testkit::quoted(out.string()) +
+          " --threads 1",
+      dir_, 300000);
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_NE(r.err.find("out of memory"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 // --from-scratch computes every slice (none evaluated from its interval's structure): the

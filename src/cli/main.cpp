@@ -1,5 +1,6 @@
 // cslice: configuration spaces of planar parts bounded by segments and circular arcs.
 #include <iostream>
+#include <new>
 
 #include "cli/commands.hpp"
 
@@ -30,6 +31,13 @@ int main(int argc, char** argv) {
   } catch (const cslice::cli::ExitError& e) {
     if (*e.what() != '\0') std::cerr << "cslice: " << e.what() << "\n";
     return e.code;
+  } catch (const std::bad_alloc&) {
+    // Not a fault of the input or of cslice: the machine's memory ran out. The critical
+    // orientations and slices of a pair grow fast with its features (600 features: 19,717
+    // orientations, 6 GB to compute its space).
+    std::cerr << "cslice: out of memory: this computation needs more memory than is available "
+                 "(docs/performance.md, larger pairs)\n";
+    return 3;
   } catch (const std::exception& e) {
     std::cerr << "cslice: internal error: " << e.what() << "\n";
     return 3;

@@ -45,9 +45,15 @@ fs::path make_test_dir(const std::string& prefix) {
 }
 
 RunResult run_cli(const std::string& args, const fs::path& dir, const std::string& input) {
+  return run_cli_with_memory_limit(args, dir, 0, input);
+}
+
+RunResult run_cli_with_memory_limit(const std::string& args, const fs::path& dir, long kilobytes,
+                                    const std::string& input) {
   const fs::path in = dir / "in.txt", out = dir / "out.txt", err = dir / "err.txt";
   write_file(in, input);
-  std::string command = quoted(CSLICE_CLI_PATH);
+  std::string command = kilobytes > 0 ? "ulimit -v " + std::to_string(kilobytes) + " && " : "";
+  command += quoted(CSLICE_CLI_PATH);
   command += " ";
   command += args;
   command += " < " + quoted(in.string());

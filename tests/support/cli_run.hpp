@@ -39,5 +39,8 @@ class ScratchDirTest : public ::testing::Test {
 // Standard input, output and error go through in.txt, out.txt and err.txt in `dir`.
 RunResult run_cli(const std::string& args, const std::filesystem::path& dir,
                   const std::string& input = "");
+// The same with the program's virtual memory limited to `kilobytes` (ulimit -v; 0: no limit).
+RunResult run_cli_with_memory_limit(const std::string& args, const std::filesystem::path& dir,
+                                    long kilobytes, const std::string& input = "");
 
 }  // namespace cslice::testkit
