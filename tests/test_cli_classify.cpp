@@ -50,6 +50,19 @@ TEST_F(CliClassify, ReadsPosesFromStandardInput) {
   EXPECT_EQ(r.out, "blocked\nfree\ncontact\ncontact\n");
 }
 
+// Text saved on Windows: a UTF-8 byte order mark first and CR LF line ends (the mark made the
+// first line malformed, exit 2).
+TEST_F(CliClassify, ReadsWindowsTextWithAByteOrderMark) {
+  const RunResult r = run(pair(),
+                          "\xEF\xBB\xBF"
+                          "0.5 0.5 0\r\n5,5,0.3\r\n");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "blocked\nfree\n");
+  const RunResult comment = run(pair(), "\xEF\xBB\xBF# x y theta\r\n5,5,0.3\r\n");
+  EXPECT_EQ(comment.status, 0) << comment.err;
+  EXPECT_EQ(comment.out, "free\n");
+}
+
 // The same pair with the fixed block drawn 1,000 mm out: the answers shift with it, and the
 // command warns that the tolerances have grown with the distance (every pair file is loaded
 // the same way, so every command does).

@@ -96,6 +96,8 @@ std::vector<Pose> read_poses_or_exit(std::istream& in) {
   std::vector<Pose> poses;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
+    // A byte order mark, as editors on Windows save UTF-8 text, is not part of the first pose.
+    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
     if (is_skipped_line(line)) continue;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     poses.push_back(parse_pose_or_exit(line, "standard input, line " + std::to_string(number)));
