@@ -378,3 +378,19 @@ TEST(Angles, FarAnglesWrapToTheOrientationSinAndCosGive) {
   EXPECT_EQ(principal_angle(kPi), -kPi);
   EXPECT_EQ(principal_angle(1e15), wrap_angle(1e15));
 }
+
+// A Transform's angle is its principal angle, consistent with its sine and cosine: an arc
+// placed at a far orientation keeps its start angle on its start point. At 1e15 rad the sum of
+// the two angles was rounded to an eighth of a radian: this arc's start angle pointed 0.075
+// away from its start.
+TEST(Angles, AnArcTurnedFarKeepsItsStartAngleOnItsStart) {
+  const Curve arc = make_arc({1.0, 2.0}, 3.0, 0.4, 1.2);
+  for (double far : {1e9, -3e13, 1e15}) {
+    const Transform t(Pose{0.5, -0.25, far});
+    EXPECT_GE(t.angle, -kPi) << far;
+    EXPECT_LT(t.angle, kPi) << far;
+    const Curve placed = transformed(arc, t);
+    const Vec2 start = placed.center + placed.radius * unit_vector(placed.start_angle);
+    EXPECT_LT(distance(start, placed.from), 1e-12) << far;
+  }
+}

@@ -82,13 +82,34 @@ struct Pose {
   double theta = 0.0;
 };
 
-// Precomputed rotation, so a placed part costs one sin/cos pair, not one per point.
+// Wraps an angle into [-pi, pi). Up to a thousand turns by the double nearest 2pi (exactly, as
+// fmod does: off the true turn by at most 3e-13 rad there); beyond, by the true turn, as
+// std::sin and std::cos reduce their argument, so that a far orientation (1e9 rad) wraps to
+// the one Transform turns by: the double nearest 2pi is 2.4e-16 short of it, which 1e9 rad,
+// 160 million turns, multiply to 4e-8 rad, and 1e15 rad to 0.04.
+double wrap_angle(double a);
+
+// theta itself when already in [-pi, pi), else wrap_angle(theta): the same orientation, small
+// enough to add to other angles without losing their digits. Contact segments add theta to
+// the features' normal angles, and at theta = 1e9 rad the sums were rounded to 1.2e-7 rad,
+// a hundred times the angular tolerance: the slice lost its free space.
+inline double principal_angle(double theta) {
+  return theta >= -kPi && theta < kPi ? theta : wrap_angle(theta);
+}
+
+// Precomputed rotation, so a placed part costs one sin/cos pair, not one per point. `angle`
+// is the turn's principal angle: the one arcs add to their start angles and contact segments
+// to normal angles, consistent with c and s (taken from p.theta itself, exactly) however far
+// p.theta is. At 1e15 rad a placed arc's start angle was rounded to an eighth of a radian.
 struct Transform {
   double c = 1.0, s = 0.0;
   Vec2 offset;
   double angle = 0.0;
   explicit Transform(Pose p)
-      : c(std::cos(p.theta)), s(std::sin(p.theta)), offset{p.x, p.y}, angle(p.theta) {}
+      : c(std::cos(p.theta)),
+        s(std::sin(p.theta)),
+        offset{p.x, p.y},
+        angle(principal_angle(p.theta)) {}
   Transform() = default;
   Vec2 rotate(Vec2 v) const { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
   Vec2 apply(Vec2 p) const { return rotate(p) + offset; }
@@ -124,21 +145,6 @@ struct Box {
   }
   double diagonal() const { return empty() ? 0.0 : distance(lo, hi); }
 };
-
-// Wraps an angle into [-pi, pi). Up to a thousand turns by the double nearest 2pi (exactly, as
-// fmod does: off the true turn by at most 3e-13 rad there); beyond, by the true turn, as
-// std::sin and std::cos reduce their argument, so that a far orientation (1e9 rad) wraps to
-// the one Transform turns by: the double nearest 2pi is 2.4e-16 short of it, which 1e9 rad,
-// 160 million turns, multiply to 4e-8 rad, and 1e15 rad to 0.04.
-double wrap_angle(double a);
-
-// theta itself when already in [-pi, pi), else wrap_angle(theta): the same orientation, small
-// enough to add to other angles without losing their digits. Contact segments add theta to
-// the features' normal angles, and at theta = 1e9 rad the sums were rounded to 1.2e-7 rad,
-// a hundred times the angular tolerance: the slice lost its free space.
-inline double principal_angle(double theta) {
-  return theta >= -kPi && theta < kPi ? theta : wrap_angle(theta);
-}
 
 // std::fmod(a, kTwoPi), bit for bit, without the library call for the angles met in
 // practice: below one turn in magnitude it is a itself, and between one and two turns

@@ -99,7 +99,7 @@ class ContactBuilder {
                  const std::vector<Vec2>* fixed_normals = nullptr, TrigMemo* trig = nullptr)
       : pair_(pair),
         rot_(turn),
-        theta_(principal_angle(turn.angle)),
+        theta_(turn.angle),
         out_(out),
         fixed_normals_(fixed_normals),
         trig_(trig) {}
