@@ -104,11 +104,10 @@ std::string report(const SpaceAnalysis& a, const SlicedSpace& space) {
 }
 
 void run(const AnalyzeCommand& cmd) {
-  if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
+  check_threads_or_exit(cmd.threads);
   const LoadSpaceResult loaded = load_space_or_exit(cmd.space_path, cmd.threads);
   const SpaceAnalysis analysis = analyze_space(*loaded.pair, *loaded.space);
-  deliver_outputs(
-      {{kStdout, cmd.json ? analysis_to_json(analysis) : report(analysis, *loaded.space)}});
+  deliver_output(kStdout, cmd.json ? analysis_to_json(analysis) : report(analysis, *loaded.space));
   // A failed check of the paper's applications is a negative answer, printed then reported.
   if (!analysis.all_checks_passed()) throw ExitError(1, "");
 }

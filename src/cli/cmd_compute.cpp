@@ -22,7 +22,7 @@ struct ComputeCommand {
 
 void run(const ComputeCommand& cmd) {
   const Pair pair = load_pair_or_exit(cmd.pair_path);
-  if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
+  check_threads_or_exit(cmd.threads);
   SpaceOptions options;
   options.threads = cmd.threads;
   options.verify_joins = cmd.verify_joins;

@@ -45,7 +45,7 @@ void run(const MeshCommand& cmd) {
   const bool stl = ends_with(cmd.out_path, ".stl");
   if (!writer && !stl)
     throw ExitError(kExitBadInput, "-o: the output must end in .obj, .ply or .stl");
-  if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
+  check_threads_or_exit(cmd.threads);
   if (cmd.tolerance && !(std::isfinite(*cmd.tolerance) && *cmd.tolerance > 0.0))
     throw ExitError(kExitBadInput, "--tolerance: expected a positive length");
   const MeshOptions options = mesh_options(cmd);

@@ -109,7 +109,7 @@ std::string json_text(const PathResult& r, const Pose& from, const Pose& to,
 }
 
 void run(const PathCommand& cmd) {
-  if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
+  check_threads_or_exit(cmd.threads);
   const Pose from = parse_pose_or_exit(cmd.from, "--from");
   const Pose to = parse_pose_or_exit(cmd.to, "--to");
   const LoadSpaceResult loaded = load_space_or_exit(cmd.space_path, cmd.threads);

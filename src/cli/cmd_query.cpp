@@ -19,7 +19,7 @@ struct QueryCommand {
 };
 
 void run(const QueryCommand& cmd) {
-  if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
+  check_threads_or_exit(cmd.threads);
   const LoadSpaceResult loaded = load_space_or_exit(cmd.space_path, cmd.threads);
   const std::vector<Pose> poses = read_poses_or_exit(std::cin);
   SpaceQuery query(*loaded.pair, *loaded.space);

@@ -81,7 +81,7 @@ SlicedSpace fastest_run(const Pair& pair, const SpaceOptions& options, int runs)
 }
 
 void run(const StatsCommand& cmd) {
-  if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
+  check_threads_or_exit(cmd.threads);
   if (cmd.runs < 1) throw ExitError(kExitBadInput, "--runs: expected 1 or more");
   // Every pair is read before anything is computed or printed: bad input prints nothing.
   std::vector<Pair> pairs;

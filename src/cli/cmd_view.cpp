@@ -429,16 +429,16 @@ MeshOptions display_mesh_options(const Pair& pair) {
 }
 
 void run(const ViewCommand& cmd) {
-  if (cmd.threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
+  check_threads_or_exit(cmd.threads);
   const LoadSpaceResult loaded = load_space_or_exit(cmd.space_path, cmd.threads);
   const Pair& pair = *loaded.pair;
   const ContactMesh mesh = contact_mesh(*loaded.space, display_mesh_options(pair));
   const std::string title = pair.name.empty() ? cmd.space_path : pair.name;
-  deliver_outputs(
-      {{cmd.out_path,
-        fill_template(viewer_template(), {{"@CSLICE_TITLE@", html_escape(title)},
-                                          {"@CSLICE_DATA@", view_data(pair, *loaded.space, mesh)},
-                                          {"@CSLICE_BUNDLE@", std::string(viewer_bundle())}})}});
+  deliver_output(
+      cmd.out_path,
+      fill_template(viewer_template(), {{"@CSLICE_TITLE@", html_escape(title)},
+                                        {"@CSLICE_DATA@", view_data(pair, *loaded.space, mesh)},
+                                        {"@CSLICE_BUNDLE@", std::string(viewer_bundle())}}));
 }
 
 #else

@@ -35,6 +35,9 @@ void deliver_outputs(std::vector<std::pair<std::string, std::string>> outputs);
 // larger pair is a gigabyte).
 void deliver_output(const std::string& path, std::string text);
 
+// Throws ExitError(2) unless a --threads value is 0 (every core) or more.
+void check_threads_or_exit(int threads);
+
 // Loads a pair file or throws ExitError(2) with the reader's message.
 Pair load_pair_or_exit(const std::string& path);
 // Loads a space file (recomputing its slices on `threads`, 0 for every core) or throws

@@ -52,6 +52,10 @@ Pair load_pair_or_exit(const std::string& path) {
   return std::move(*result.pair);
 }
 
+void check_threads_or_exit(int threads) {
+  if (threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
+}
+
 LoadSpaceResult load_space_or_exit(const std::string& path, int threads) {
   LoadSpaceResult result = load_space(path, threads);
   if (!result.ok()) throw ExitError(kExitBadInput, result.error->message());
