@@ -18,6 +18,7 @@
 #include "slice/boundary_model.hpp"
 #include "support/examples.hpp"
 #include "support/random_parts.hpp"
+#include "support/random_polygons.hpp"
 #include "support/slice_oracle.hpp"
 
 using namespace cslice;
@@ -36,8 +37,8 @@ SlicedSpace space_of(const Pair& pair, bool evaluate) {
 
 // Every evaluated slice of `pair` against its twin computed from scratch; returns how many
 // intermediate slices were evaluated, out of `intermediates`.
-int compare_spaces(const Pair& pair, const std::string& name, int& intermediates) {
-  const SlicedSpace fast = space_of(pair, true), slow = space_of(pair, false);
+int compare_spaces(const Pair& pair, const std::string& name, const SlicedSpace& fast,
+                   const SlicedSpace& slow, int& intermediates) {
   EXPECT_EQ(fast.slices.size(), slow.slices.size()) << name;
   EXPECT_EQ(fast.topology.components.size(), slow.topology.components.size()) << name;
   EXPECT_EQ(fast.topology.cells.size(), slow.topology.cells.size()) << name;
@@ -82,6 +83,9 @@ int compare_spaces(const Pair& pair, const std::string& name, int& intermediates
                                name + " slice " + std::to_string(i));
   }
   return evaluated;
+}
+int compare_spaces(const Pair& pair, const std::string& name, int& intermediates) {
+  return compare_spaces(pair, name, space_of(pair, true), space_of(pair, false), intermediates);
 }
 
 }  // namespace
@@ -185,4 +189,29 @@ TEST(EvaluatedSlices, ModelMustReproduceItsSlice) {
   if (extra_node.contact_graph.nodes != slice.contact_graph.nodes) {
     EXPECT_FALSE(model_reproduces(*model, extra_node));
   }
+}
+
+// A gear of 4 teeth in a ring gear of 9: the teeth lock in pockets, thin free components that
+// join across critical orientations only by carrying their samples (joins_by_carrying). The
+// carries' steps lie inside an interval, so they are evaluated from its model, as side slices
+// are; the topology is the one computed from scratch.
+TEST(EvaluatedSlices, CarriesStepThroughEvaluatedSlices) {
+  const double pitch = kTwoPi / 4, ring_pitch = kTwoPi / 9;
+  const testkit::LoopVertices gear =
+      testkit::gear({4, 3.0, 0.75, 0.126 * pitch, 0.2625 * pitch, 0.0});
+  const testkit::LoopVertices ring =
+      testkit::gear({9, 3.5, 5.75, 0.2625 * ring_pitch, 0.126 * ring_pitch, ring_pitch / 2});
+  const std::string json =
+      "{\"name\":\"gear in ring\",\"moving\":{\"loops\":[" + testkit::loop_json(gear) +
+      "]},\"fixed\":{\"enclosure\":true,\"loops\":[" + testkit::loop_json(ring) + "]}}";
+  const LoadResult loaded = parse_pair(json, "gear in ring");
+  ASSERT_TRUE(loaded.ok()) << loaded.error->message();
+  const SlicedSpace fast = space_of(*loaded.pair, true), slow = space_of(*loaded.pair, false);
+  int intermediates = 0;
+  compare_spaces(*loaded.pair, "gear in ring", fast, slow, intermediates);
+  EXPECT_GT(fast.topology.checks.joins_by_carrying, 0);
+  EXPECT_EQ(fast.topology.checks.joins_by_carrying, slow.topology.checks.joins_by_carrying);
+  EXPECT_GT(fast.topology.checks.carry_slices, 0);
+  EXPECT_EQ(fast.topology.checks.carry_slices_evaluated, fast.topology.checks.carry_slices);
+  EXPECT_EQ(slow.topology.checks.carry_slices_evaluated, 0);
 }

@@ -137,6 +137,10 @@ struct TopologyChecks {
   // Not a failure: side slices evaluated from their interval's representative's boundary
   // structure (TopologyOptions::evaluate_slices) instead of computed from scratch.
   int side_slices_evaluated = 0;
+  // Not a failure: the slices the carries stepped through (joins_by_carrying), and how many
+  // of them were evaluated from their interval's boundary model instead of computed.
+  int carry_slices = 0;
+  int carry_slices_evaluated = 0;
   std::vector<std::string> problems;  // the first few, in words
 };
 

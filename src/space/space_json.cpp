@@ -198,6 +198,8 @@ json topology_json(const SpaceTopology& topo) {
             {"joins_by_clearance", k.joins_by_clearance},
             {"joins_by_carrying", k.joins_by_carrying},
             {"side_slices_evaluated", k.side_slices_evaluated},
+            {"carry_slices", k.carry_slices},
+            {"carry_slices_evaluated", k.carry_slices_evaluated},
             {"orphan_critical_components", k.orphan_critical_components},
             {"refinement_slices", k.refinement_slices},
             {"label_matches", k.label_matches},

@@ -159,39 +159,55 @@ class TopologyBuilder {
     return side % 2 == 0 ? (k + n - 1) % n : k;
   }
 
-  // A side slice lies inside its interval, so its representative's boundary model, where it
-  // holds, gives it at a fraction of the cost: per interval, one model for its side slices
-  // (up to two), built in parallel. None when verifying joins: then each side slice is
-  // computed from scratch and checked against the representative, a check of the critical
-  // orientations.
+  // A slice inside an interval (a side slice, a step carrying a sample) is given by the
+  // interval's boundary model, where it holds, at a fraction of the cost of computing it. None
+  // when verifying joins: then each such slice is computed from scratch and checked against
+  // the representative, a check of the critical orientations.
+  bool models_wanted() const { return !options_.verify_joins && options_.evaluate_slices; }
+
+  // The model the slices' computation built for the interval's representative (it had
+  // intermediate slices), or null.
+  const std::optional<BoundaryModel>* known_model(int interval) const {
+    if (!known_) return nullptr;
+    const auto& slot = (*known_)[size_t(representative_[interval])];
+    return slot ? &*slot : nullptr;
+  }
+
+  // The interval's model, built on first use; null where there is none.
+  const BoundaryModel* model_of(int interval) {
+    if (!models_wanted() || representative_[interval] < 0) return nullptr;
+    if (const auto* known = known_model(interval)) return *known ? &**known : nullptr;
+    if (!model_tried_[interval]) build_model(interval);
+    const std::optional<BoundaryModel>& model = built_models_[interval];
+    return model ? &*model : nullptr;
+  }
+
+  void build_model(int interval) {
+    const Slice& representative = space_.slices[representative_[interval]].slice;
+    built_models_[interval] = detail::checked_model(pair_, representative);
+    model_tried_[interval] = 1;
+  }
+
+  // Per interval, the model for its side slices (up to two), those not known built in
+  // parallel.
   std::vector<const BoundaryModel*> side_models() {
     std::vector<const BoundaryModel*> models(starts_.size(), nullptr);
-    if (options_.verify_joins || !options_.evaluate_slices) return models;
+    built_models_.assign(starts_.size(), std::nullopt);
+    model_tried_.assign(starts_.size(), 0);
+    if (!models_wanted()) return models;
     std::vector<int> wanted;
     for (int i = 0; i < static_cast<int>(has_side_.size()); ++i) {
       const int interval = side_interval(i);
-      if (has_side_[i] && representative_[interval] >= 0) wanted.push_back(interval);
+      if (has_side_[i] && representative_[interval] >= 0 && !known_model(interval))
+        wanted.push_back(interval);
     }
     std::sort(wanted.begin(), wanted.end());
     wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
-    // The model of a representative with intermediate slices was built for them already.
-    const auto known = [&](int interval) -> const std::optional<std::optional<BoundaryModel>>* {
-      if (!known_) return nullptr;
-      const auto& slot = (*known_)[size_t(representative_[interval])];
-      return slot ? &slot : nullptr;
-    };
-    built_models_.assign(starts_.size(), std::nullopt);
     detail::for_each_index_parallel<NoScratch>(
-        pair_, wanted.size(), options_.threads, [&](size_t k, NoScratch&) {
-          if (known(wanted[k])) return;
-          const Slice& representative = space_.slices[representative_[wanted[k]]].slice;
-          built_models_[wanted[k]] = detail::checked_model(pair_, representative);
-        });
-    for (int interval : wanted) {
-      const std::optional<BoundaryModel>& model =
-          known(interval) ? **known(interval) : built_models_[interval];
-      models[interval] = model ? &*model : nullptr;
-    }
+        pair_, wanted.size(), options_.threads,
+        [&](size_t k, NoScratch&) { build_model(wanted[k]); });
+    for (int i = 0; i < static_cast<int>(has_side_.size()); ++i)
+      if (has_side_[i]) models[side_interval(i)] = model_of(side_interval(i));
     return models;
   }
 
@@ -465,8 +481,8 @@ class TopologyBuilder {
         for (int x = 1; x < nb + na + nc; ++x) local.unite(0, x);
     } else {
       join_by_samples(sb, sa, sc, far_[2 * k], far_[2 * k + 1], local);
-      join_by_carrying(sb, sc, 0, C0, local);
-      join_by_carrying(sa, sc, B0, C0, local);
+      join_by_carrying(sb, sc, before, 0, C0, local);
+      join_by_carrying(sa, sc, after, B0, C0, local);
     }
     // Components of one cell are one (they differ only after a reported match failure).
     for (int x = 0; x < nb; ++x)
@@ -569,12 +585,13 @@ class TopologyBuilder {
   // to stand for a free segment to side slice s is carried across (`carry`) and joined where it
   // lands. Elements numbered as in `transition`: s's from `base`, the critical slice's from
   // `c0`.
-  void join_by_carrying(const Slice& s, const Slice& sc, int base, int c0, UnionFind& local) {
+  void join_by_carrying(const Slice& s, const Slice& sc, int interval, int base, int c0,
+                        UnionFind& local) {
     const double motion = reach_ * std::fabs(wrap_angle(s.theta - sc.theta));
     for (int c = 0; c < component_count(sc); ++c) {
       const double clearance = sample_clearance(sc, c);
       if (clearance - sc.epsilon > motion) continue;  // its sample rule holds
-      const int a = carry(sc, c, clearance, s);
+      const int a = carry(sc, c, clearance, s, interval);
       if (a < 0 || local.find(c0 + c) == local.find(base + a)) continue;
       local.unite(c0 + c, base + a);
       ++topo_.checks.joins_by_carrying;
@@ -588,8 +605,9 @@ class TopologyBuilder {
   // sample, a free path there. Returns the component of `to` where it lands, or -1 when it
   // leaves free space or the steps shrink below the angular tolerance or run out (a component
   // shrinking to nothing at the critical orientation).
-  int carry(const Slice& from, int c, double clearance, const Slice& to) {
-    if (!slicer_) slicer_.emplace(pair_);
+  int carry(const Slice& from, int c, double clearance, const Slice& to, int interval) {
+    if (!carrier_) carrier_.emplace(&pair_);
+    const BoundaryModel* model = model_of(interval);
     const double target = from.theta + wrap_angle(to.theta - from.theta);
     Vec2 p = from.free_components[c].sample;
     double theta = from.theta;
@@ -599,7 +617,10 @@ class TopologyBuilder {
       const double next =
           target > theta ? std::min(target, theta + turn) : std::max(target, theta - turn);
       if (next == target) return to.locate(p);
-      const Slice slice = slicer_->slice(wrap_angle(next));
+      bool evaluated = false;
+      const Slice slice = carrier_->slice(model, wrap_angle(next), evaluated);
+      ++topo_.checks.carry_slices;
+      topo_.checks.carry_slices_evaluated += evaluated ? 1 : 0;
       const int d = slice.locate(p);
       if (d < 0) return -1;
       p = slice.free_components[d].sample;
@@ -691,13 +712,14 @@ class TopologyBuilder {
   TopologyOptions options_;
   const detail::KnownModels* known_;                        // models built with the slices, or null
   std::vector<std::optional<BoundaryModel>> built_models_;  // per interval: those built here
+  std::vector<char> model_tried_;  // per interval: built_models_ holds its model (or none)
   std::vector<double> criticals_, starts_, ends_, side_angles_;
   std::vector<char> has_side_;  // 2k: an extra slice before critical k; 2k + 1: after it
   std::vector<char> by_count_;  // per critical: joined by joins_follow_from_counts
   std::vector<char> far_;       // 2k, 2k + 1: that side's stored slice stands in (clears)
   double reach_ = moving_reach(pair_.moving);
-  std::optional<Slicer> slicer_;          // for carrying samples across critical orientations
-  std::vector<std::vector<int>> stored_;  // per interval: its non-critical slices, by theta
+  std::optional<detail::SliceWorker> carrier_;  // carries samples across critical orientations
+  std::vector<std::vector<int>> stored_;        // per interval: its non-critical slices, by theta
   std::vector<int> critical_slice_, representative_;
   std::vector<Slice> sides_;          // 2k: before critical k, 2k + 1: after it
   std::vector<char> side_evaluated_;  // per side: evaluated from its interval's model

@@ -161,6 +161,22 @@ LoopVertices rectangle(double w, double h, Vec2 center, double turn) {
   return loop;
 }
 
+LoopVertices gear(const GearShape& g) {
+  const double pitch = kTwoPi / g.teeth;
+  const auto at = [](double r, double a, double sweep) {
+    return LoopVertex{r * std::cos(a), r * std::sin(a), std::tan(sweep / 4)};
+  };
+  LoopVertices loop;
+  for (int i = 0; i < g.teeth; ++i) {
+    const double c = g.phase + i * pitch;
+    loop.push_back(at(g.root, c - g.root_half, 0.0));                      // rising flank
+    loop.push_back(at(g.tip, c - g.tip_half, 2 * g.tip_half));             // tip arc
+    loop.push_back(at(g.tip, c + g.tip_half, 0.0));                        // falling flank
+    loop.push_back(at(g.root, c + g.root_half, pitch - 2 * g.root_half));  // root arc
+  }
+  return loop;
+}
+
 double loop_area(const LoopVertices& loop) {
   double area = 0.0;
   const size_t n = loop.size();

@@ -80,6 +80,19 @@ LoopVertices random_comb(std::mt19937& rng, const CombOptions& options);
 // A counterclockwise rectangle of sides w x h centred at `center`, turned by `turn`.
 LoopVertices rectangle(double w, double h, Vec2 center = {}, double turn = 0.0);
 
+// A counterclockwise gear of `teeth` straight-flanked teeth about the origin, tooth 0 centred
+// on the angle `phase`: tips are arcs of radius `tip` spanning `tip_half` radians either side
+// of a tooth's centre, roots arcs of radius `root` between flanks that leave it `root_half`
+// radians either side. With tip < root the teeth point inwards: the opening of a ring gear
+// (make the fixed part an enclosure).
+struct GearShape {
+  int teeth = 8;
+  double tip = 1.0, root = 0.8;
+  double tip_half = 0.1, root_half = 0.15;
+  double phase = 0.0;
+};
+LoopVertices gear(const GearShape& shape);
+
 // Signed area enclosed by a loop (positive counterclockwise), arcs included.
 double loop_area(const LoopVertices& loop);
 
