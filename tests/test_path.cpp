@@ -219,6 +219,23 @@ TEST(Path, FastenerPinGoesInThroughTheSlot) {
   EXPECT_TRUE(vertical_in_slot);
 }
 
+// The path's ends are the configurations asked for, bit for bit: wrapping 0.3 into [-pi, pi)
+// by way of pi gave 0.2999999999999998.
+TEST(Path, EndsAreTheConfigurationsAskedFor) {
+  const Pair pair = testkit::load_example("fastener");
+  const SlicedSpace space = space_of(pair);
+  const Pose out{0.1, 6.0, 0.3}, in{0.0, -3.0, -0.1};
+  const PathResult r = find_path(pair, space, out, in);
+  ASSERT_EQ(r.status, PathStatus::found) << r.problem;
+  EXPECT_EQ(r.poses.front().theta, out.theta);
+  EXPECT_EQ(r.poses.back().theta, in.theta);
+  EXPECT_EQ(r.poses.back().x, in.x);
+  for (const Pose& p : r.poses) {
+    EXPECT_GE(p.theta, -kPi);
+    EXPECT_LT(p.theta, kPi);
+  }
+}
+
 // A start at a far orientation is the same placement as its principal angle, and gets the path
 // planned from there: the carries add their steps to the start's theta, and at 1e15 rad
 // those sums were rounded to an eighth of a radian (no path was found).

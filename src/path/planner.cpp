@@ -314,12 +314,14 @@ PathResult PathPlanner::Impl::plan(const Pose& from_asked, const Pose& to_asked)
   stats.configurations_before_shortcut = static_cast<int>(path.size());
   if (options.shortcut) path = shortcut(path);
   r.component = r.start.component >= 0 ? r.start.component : r.goal.component;
+  // Principal angles, not wrap_angle's: an orientation already in [-pi, pi) is printed as
+  // given (wrap_angle(0.3) is 0.2999999999999998), so the path ends exactly where asked.
   for (const Waypoint& w : path) {
-    r.poses.push_back({w.pose.x, w.pose.y, wrap_angle(w.pose.theta)});
+    r.poses.push_back({w.pose.x, w.pose.y, principal_angle(w.pose.theta)});
     r.clearance.push_back(w.clearance);
   }
-  r.poses.front() = {from.x, from.y, wrap_angle(from.theta)};
-  r.poses.back() = {to.x, to.y, wrap_angle(to.theta)};
+  r.poses.front() = from;
+  r.poses.back() = to;
   return finish(PathStatus::found);
 }
 
