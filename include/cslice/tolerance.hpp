@@ -104,6 +104,13 @@ inline constexpr double kRelativeSymmetrySlack = 1e-12;
 // 130); 10,000 (about 1,300), 40 of 200 random pairs. The failures are fits and slivers that
 // the slices resolve only to the coarser epsilon, over wider angles than the checks allow.
 inline constexpr double kPlacementCoarseningWarning = 10.0;
+// Outline pieces of a DXF drawing (lines, arcs, open polylines) continue each other where
+// their ends lie this close, relative to the size of the drawing's two layers
+// (dimensionless; src/parts/dxf_loops.cpp). CAD programs write coordinates to 16 digits, so
+// ends meant to meet agree to about 1e-15 of the size; some exporters round to six decimals,
+// 5e-7 of a drawing unit, which is 5e-9 of a 100 mm part. A thousandth of the default contact
+// tolerance covers both, and ends that far apart were never meant to be one point.
+inline constexpr double kDxfJoinRelative = 1e-6;
 // A path step is certified when its sweep stays below the clearances at its ends less twice
 // the contact tolerance (docs/path.md, The certificate). Those clearances and the sweep are
 // rounded relative to the magnitudes in play (the pair's size, the sweep, the clearances, the

@@ -46,8 +46,7 @@ void run(const MeshCommand& cmd) {
   if (!writer && !stl)
     throw ExitError(kExitBadInput, "-o: the output must end in .obj, .ply or .stl");
   check_threads_or_exit(cmd.threads);
-  if (cmd.tolerance && !(std::isfinite(*cmd.tolerance) && *cmd.tolerance > 0.0))
-    throw ExitError(kExitBadInput, "--tolerance: expected a positive length");
+  check_positive_length_or_exit(cmd.tolerance, "--tolerance");
   const MeshOptions options = mesh_options(cmd);
   const LoadSpaceResult loaded = load_space_or_exit(cmd.space_path, cmd.threads);
   const ContactMesh mesh = contact_mesh(*loaded.pair, *loaded.space, options);

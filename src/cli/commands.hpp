@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <iosfwd>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -37,6 +38,8 @@ void deliver_output(const std::string& path, std::string text);
 
 // Throws ExitError(2) unless a --threads value is 0 (every core) or more.
 void check_threads_or_exit(int threads);
+// Throws ExitError(2) naming `option` when a length given is not positive and finite.
+void check_positive_length_or_exit(const std::optional<double>& value, const std::string& option);
 
 // Loads a pair file or throws ExitError(2) with the reader's message.
 Pair load_pair_or_exit(const std::string& path);
@@ -77,5 +80,6 @@ void register_analyze(CLI::App& app);
 void register_query(CLI::App& app);
 void register_path(CLI::App& app);
 void register_view(CLI::App& app);
+void register_import(CLI::App& app);
 
 }  // namespace cslice::cli

@@ -56,6 +56,11 @@ void check_threads_or_exit(int threads) {
   if (threads < 0) throw ExitError(kExitBadInput, "--threads: expected 0 or more");
 }
 
+void check_positive_length_or_exit(const std::optional<double>& value, const std::string& option) {
+  if (value && !(std::isfinite(*value) && *value > 0.0))
+    throw ExitError(kExitBadInput, option + ": expected a positive length");
+}
+
 LoadSpaceResult load_space_or_exit(const std::string& path, int threads) {
   LoadSpaceResult result = load_space(path, threads);
   if (!result.ok()) throw ExitError(kExitBadInput, result.error->message());

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "cslice 0.1.0");
   cslice::cli::register_info(app);
+  cslice::cli::register_import(app);
   cslice::cli::register_classify(app);
   cslice::cli::register_render(app);
   cslice::cli::register_equivalent(app);

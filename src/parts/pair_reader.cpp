@@ -320,19 +320,24 @@ LoadResult parse_pair(std::string_view json_text, std::string_view source) {
   return result;
 }
 
-LoadResult load_pair(const std::string& path) {
+std::optional<InputError> detail::read_input_file(const std::string& path, std::string& text) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
-    return LoadResult{std::nullopt, InputError{path, "", -1, -1, "is a directory, not a file"}};
+    return InputError{path, "", -1, -1, "is a directory, not a file"};
   std::ifstream in(path, std::ios::binary);
-  if (!in)
-    return LoadResult{
-        std::nullopt,
-        InputError{path, "", -1, -1, std::string("cannot open: ") + std::strerror(errno)}};
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return LoadResult{std::nullopt, InputError{path, "", -1, -1, "read error"}};
-  return parse_pair(text.str(), path);
+  if (!in) return InputError{path, "", -1, -1, std::string("cannot open: ") + std::strerror(errno)};
+  std::ostringstream out;
+  out << in.rdbuf();
+  if (in.bad()) return InputError{path, "", -1, -1, "read error"};
+  text = std::move(out).str();
+  return std::nullopt;
+}
+
+LoadResult load_pair(const std::string& path) {
+  std::string text;
+  if (std::optional<InputError> error = detail::read_input_file(path, text))
+    return LoadResult{std::nullopt, std::move(error)};
+  return parse_pair(text, path);
 }
 
 }  // namespace cslice

@@ -56,6 +56,9 @@ Part build_part(const RawPart& raw);
 // whose edges are small compared with the part.
 std::optional<InputError> check_part_curves(const Part& part, const Tolerances& tol);
 
+// The whole file at `path` into `text`, or why not (a directory, cannot open, read error).
+std::optional<InputError> read_input_file(const std::string& path, std::string& text);
+
 // Number formatting for messages: shortest form that still tells values apart.
 std::string format_number(double v);
 std::string format_point(Vec2 p);

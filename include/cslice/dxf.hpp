@@ -1,0 +1,50 @@
+// Pair files from CAD drawings: the outlines on two layers of an ASCII DXF file become the
+// moving and the fixed part (docs/dxf-import.md). Lines, arcs, circles and polylines (with
+// bulges) are read; lines, arcs and open polylines are joined end to end into closed loops.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "cslice/geometry.hpp"
+#include "cslice/pair.hpp"
+
+namespace cslice {
+
+struct DxfImportOptions {
+  std::string moving_layer = "moving";
+  std::string fixed_layer = "fixed";
+  bool fixed_enclosure = false;  // the fixed part is the region outside its loops
+  // The drawing point that becomes the moving part's body origin, the point it turns about.
+  Vec2 moving_origin;
+  std::optional<double> tolerance;       // the pair's tolerance, in drawing units
+  std::optional<double> join_tolerance;  // ends this close meet (default: kDxfJoinRelative)
+  std::string name;                      // the pair's name (default: the source's)
+};
+
+struct DxfImportResult {
+  std::optional<std::string> pair_json;  // a pair file's text, as docs/pair-format.md
+  std::optional<InputError> error;       // names the source, part, layer, entity and line
+  bool ok() const { return pair_json.has_value(); }
+};
+
+// Reads the drawing's text (`source` names it in errors) into a pair file's text. The text is
+// not yet checked as a pair: parse_pair does that (import_dxf_pair does both).
+DxfImportResult import_dxf(std::string_view dxf_text, std::string_view source,
+                           const DxfImportOptions& options);
+
+// import_dxf, then parse_pair on its text; an error of the pair's loops names the DXF entity
+// each loop came from.
+struct DxfPairResult {
+  std::optional<Pair> pair;
+  std::string pair_json;
+  std::optional<InputError> error;
+  bool ok() const { return pair.has_value(); }
+};
+DxfPairResult import_dxf_pair(std::string_view dxf_text, std::string_view source,
+                              const DxfImportOptions& options);
+// import_dxf_pair of the file at `path`.
+DxfPairResult load_dxf_pair(const std::string& path, const DxfImportOptions& options);
+
+}  // namespace cslice

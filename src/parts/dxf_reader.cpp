@@ -1,0 +1,500 @@
+// ASCII DXF drawings as pair files (docs/dxf-import.md). A DXF file is a list of groups, each
+// two lines: an integer code, then a value. We read the header's unit and the ENTITIES
+// section, and of its entities those on the two chosen layers: LINE, ARC, CIRCLE, LWPOLYLINE
+// and POLYLINE (with its VERTEX entities). Blocks are not expanded.
+//
+// Read here rather than with dxflib (Debian's libdxflib 3.26.4): that library crashed on a
+// LWPOLYLINE declaring 99999999999 vertices (it sizes an array from the count) and asked for
+// 32 GB on 2e9, where bad input must get a message and exit status 2. The few entities a
+// part outline uses are short to read, and every value is checked as it is taken.
+#include <charconv>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <span>
+#include <tuple>
+
+#include "cslice/dxf.hpp"
+#include "cslice/tolerance.hpp"
+#include "parts/dxf_internal.hpp"
+#include "parts/validate.hpp"
+
+namespace cslice {
+
+namespace {
+
+using dxf::ClosedLoop;
+using dxf::Layer;
+using dxf::Origin;
+using dxf::OutLoop;
+using dxf::Piece;
+
+struct Group {
+  int code = 0;
+  std::string_view value;
+  int line = 0;  // 1-based line of the code
+};
+
+// Thrown while reading; import_dxf turns it into an InputError.
+struct DxfError {
+  std::string part, reason;
+};
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
+    s.remove_suffix(1);
+  return s;
+}
+
+std::string quoted(std::string_view s) {
+  return "'" + std::string(s.substr(0, 40)) + (s.size() > 40 ? "...'" : "'");
+}
+
+// The groups of the text: a code line (an integer), then its value line.
+std::vector<Group> read_groups(std::string_view text) {
+  if (text.substr(0, 18) == "AutoCAD Binary DXF")
+    throw DxfError{"", "a binary DXF file; save the drawing as ASCII DXF"};
+  std::vector<std::string_view> lines;
+  for (size_t start = 0; start < text.size();) {
+    size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) end = text.size();
+    lines.push_back(trim(text.substr(start, end - start)));
+    start = end + 1;
+  }
+  while (!lines.empty() && lines.back().empty()) lines.pop_back();
+  if (lines.empty()) throw DxfError{"", "the file is empty: not a DXF drawing"};
+  std::vector<Group> groups;
+  for (size_t i = 0; i < lines.size(); i += 2) {
+    Group g;
+    g.line = static_cast<int>(i) + 1;
+    const std::string_view code = lines[i];
+    const auto [end, ec] = std::from_chars(code.data(), code.data() + code.size(), g.code);
+    if (code.empty() || ec != std::errc() || end != code.data() + code.size())
+      throw DxfError{"", "line " + std::to_string(g.line) + ": group code " + quoted(code) +
+                             " is not an integer: not an ASCII DXF file"};
+    if (i + 1 >= lines.size())
+      throw DxfError{"", "line " + std::to_string(g.line) + ": group code " + std::string(code) +
+                             " has no value: the file is cut short"};
+    g.value = lines[i + 1];
+    groups.push_back(g);
+  }
+  return groups;
+}
+
+// One entity: its type, the line it starts at and its groups (up to the next code 0).
+struct Entity {
+  std::string_view type;
+  int line = 0;
+  std::span<const Group> groups;
+  std::string_view layer() const {
+    for (const Group& g : groups)
+      if (g.code == 8) return g.value;
+    return "0";  // DXF's default layer
+  }
+};
+
+// The drawing's two layers, filled entity by entity.
+class Reader {
+ public:
+  explicit Reader(const DxfImportOptions& options) : options_(options) {}
+
+  Layer moving, fixed;
+  std::set<std::string> layers_seen;  // layers holding any entity, for messages
+  std::string units;
+
+  void read(const std::vector<Group>& groups) {
+    size_t i = 0;
+    while (i < groups.size()) {
+      if (groups[i].code == 0 && groups[i].value == "EOF") return;
+      if (groups[i].code == 0 && groups[i].value == "SECTION" && i + 1 < groups.size() &&
+          groups[i + 1].code == 2) {
+        const std::string_view name = groups[i + 1].value;
+        i += 2;
+        const size_t end = section_end(groups, i);
+        if (name == "HEADER") read_header({groups.data() + i, end - i});
+        if (name == "ENTITIES") read_entities({groups.data() + i, end - i});
+        i = end;
+        continue;
+      }
+      ++i;
+    }
+  }
+
+ private:
+  static size_t section_end(const std::vector<Group>& groups, size_t i) {
+    while (i < groups.size() && !(groups[i].code == 0 && groups[i].value == "ENDSEC")) ++i;
+    return i;
+  }
+
+  void read_header(std::span<const Group> groups) {
+    for (size_t i = 0; i + 1 < groups.size(); ++i)
+      if (groups[i].code == 9 && groups[i].value == "$INSUNITS" && groups[i + 1].code == 70) {
+        int code = 0;
+        const std::string_view v = groups[i + 1].value;
+        std::from_chars(v.data(), v.data() + v.size(), code);
+        static const std::pair<int, const char*> kUnits[] = {{1, "in"}, {2, "ft"}, {4, "mm"},
+                                                             {5, "cm"}, {6, "m"},  {13, "um"}};
+        for (const auto& [c, name] : kUnits)
+          if (c == code) units = name;
+      }
+  }
+
+  void read_entities(std::span<const Group> groups) {
+    size_t i = 0;
+    while (i < groups.size()) {
+      if (groups[i].code != 0) {
+        ++i;
+        continue;
+      }
+      size_t end = i + 1;
+      while (end < groups.size() && groups[end].code != 0) ++end;
+      const Entity e{groups[i].value, groups[i].line, groups.subspan(i + 1, end - i - 1)};
+      i = end;
+      if (e.type == "POLYLINE") {
+        // Its vertices follow as entities of their own, up to SEQEND.
+        std::vector<Entity> vertices;
+        while (i < groups.size() && groups[i].value != "SEQEND" &&
+               (groups[i].code != 0 || groups[i].value == "VERTEX")) {
+          size_t v_end = i + 1;
+          while (v_end < groups.size() && groups[v_end].code != 0) ++v_end;
+          if (groups[i].code == 0)
+            vertices.push_back(
+                {groups[i].value, groups[i].line, groups.subspan(i + 1, v_end - i - 1)});
+          i = v_end;
+        }
+        entity(e, &vertices);
+      } else {
+        entity(e, nullptr);
+      }
+    }
+  }
+
+  Layer* layer_of(const Entity& e, std::string& part) {
+    const std::string name(trim(e.layer()));
+    layers_seen.insert(name);
+    if (name == options_.moving_layer) {
+      part = "moving";
+      return &moving;
+    }
+    if (name == options_.fixed_layer) {
+      part = "fixed";
+      return &fixed;
+    }
+    return nullptr;
+  }
+
+  void entity(const Entity& e, const std::vector<Entity>* vertices) {
+    std::string part;
+    Layer* layer = layer_of(e, part);
+    if (!layer) return;
+    part_ = part;
+    const Origin origin{std::string(e.type), e.line};
+    if (e.type == "LINE")
+      line(e, origin, *layer);
+    else if (e.type == "ARC")
+      arc(e, origin, *layer);
+    else if (e.type == "CIRCLE")
+      circle(e, origin, *layer);
+    else if (e.type == "LWPOLYLINE")
+      lwpolyline(e, origin, *layer);
+    else if (e.type == "POLYLINE")
+      polyline(e, *vertices, origin, *layer);
+    else if (e.type == "SPLINE" || e.type == "ELLIPSE")
+      fail(origin.describe() + ": a " + std::string(e.type) +
+           " is not a line or circular arc; approximate it by arcs and lines");
+    else if (e.type == "INSERT")
+      fail(origin.describe() + ": block references are not expanded; explode the block");
+    // Anything else (text, dimensions, hatches, points) annotates the drawing: not outline.
+  }
+
+  [[noreturn]] void fail(const std::string& reason) const {
+    throw DxfError{part_, "layer '" + current_layer() + "': " + reason};
+  }
+  std::string current_layer() const {
+    return part_ == "moving" ? options_.moving_layer : options_.fixed_layer;
+  }
+
+  double number(const Group& g, const Origin& origin) const {
+    double v = 0.0;
+    const std::string_view s = g.value;
+    const char* first = s.data() + (!s.empty() && s.front() == '+' ? 1 : 0);
+    const auto [end, ec] = std::from_chars(first, s.data() + s.size(), v);
+    if (s.empty() || ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v))
+      fail(origin.describe() + ": line " + std::to_string(g.line + 1) + ": " + quoted(s) +
+           " is not a number (group code " + std::to_string(g.code) + ")");
+    return v;
+  }
+
+  // The value of `code` in the entity, or `fallback` when it has none.
+  double value(const Entity& e, int code, const Origin& origin, double fallback) const {
+    for (const Group& g : e.groups)
+      if (g.code == code) return number(g, origin);
+    return fallback;
+  }
+  double required(const Entity& e, int code, const Origin& origin) const {
+    for (const Group& g : e.groups)
+      if (g.code == code) return number(g, origin);
+    fail(origin.describe() + ": no group code " + std::to_string(code));
+  }
+
+  // Whether the entity's coordinates are mirrored (extrusion direction (0, 0, -1), how CAD
+  // programs store a mirrored arc); anything but +-z is out of the drawing's plane.
+  bool mirrored(const Entity& e, const Origin& origin) const {
+    const double x = value(e, 210, origin, 0.0), y = value(e, 220, origin, 0.0),
+                 z = value(e, 230, origin, 1.0);
+    if (std::fabs(x) > 1e-12 || std::fabs(y) > 1e-12 || z == 0.0)
+      fail(origin.describe() + ": drawn out of the XY plane (extrusion direction " +
+           detail::format_number(x) + ", " + detail::format_number(y) + ", " +
+           detail::format_number(z) + ")");
+    return z < 0.0;
+  }
+
+  // Object coordinates to the drawing's: with the extrusion along -z the x axis is reversed
+  // (DXF's arbitrary axis rule), so arcs turn the other way.
+  static Piece flip(Piece p, bool mirror) {
+    if (!mirror) return p;
+    p.from.x = -p.from.x;
+    p.to.x = -p.to.x;
+    p.bulge = -p.bulge;
+    return p;
+  }
+
+  void line(const Entity& e, const Origin& o, Layer& layer) {
+    Piece p{
+        {required(e, 10, o), required(e, 20, o)}, {required(e, 11, o), required(e, 21, o)}, 0.0, o};
+    layer.pieces.push_back(flip(p, mirrored(e, o)));
+  }
+
+  void arc(const Entity& e, const Origin& o, Layer& layer) {
+    const Vec2 c{required(e, 10, o), required(e, 20, o)};
+    const double r = required(e, 40, o);
+    const double start = required(e, 50, o), end = required(e, 51, o);
+    if (!(r > 0.0))
+      fail(o.describe() + ": radius " + detail::format_number(r) + " is not positive");
+    double sweep = std::fmod(end - start, 360.0);
+    if (sweep <= 0.0) sweep += 360.0;
+    if (!(sweep > 0.0 && sweep < 360.0))
+      fail(o.describe() + ": its start and end angles are one angle; draw a CIRCLE for a full one");
+    const double a0 = start * kPi / 180.0, a1 = end * kPi / 180.0;
+    Piece p{c + Vec2{r * std::cos(a0), r * std::sin(a0)},
+            c + Vec2{r * std::cos(a1), r * std::sin(a1)}, std::tan(sweep * kPi / 180.0 / 4.0), o};
+    layer.pieces.push_back(flip(p, mirrored(e, o)));
+  }
+
+  void circle(const Entity& e, const Origin& o, Layer& layer) {
+    ClosedLoop loop;
+    loop.circle = true;
+    loop.center = {required(e, 10, o), required(e, 20, o)};
+    loop.radius = required(e, 40, o);
+    if (!(loop.radius > 0.0))
+      fail(o.describe() + ": radius " + detail::format_number(loop.radius) + " is not positive");
+    if (mirrored(e, o)) loop.center.x = -loop.center.x;
+    loop.origin = o;
+    layer.loops.push_back(loop);
+  }
+
+  struct Vertex {
+    Vec2 p;
+    double bulge = 0.0;
+  };
+
+  void lwpolyline(const Entity& e, const Origin& o, Layer& layer) {
+    std::vector<Vertex> vertices;
+    for (const Group& g : e.groups) {
+      if (g.code == 10) vertices.push_back({{number(g, o), 0.0}, 0.0});
+      if (vertices.empty()) continue;
+      if (g.code == 20) vertices.back().p.y = number(g, o);
+      if (g.code == 42) vertices.back().bulge = number(g, o);
+    }
+    add_polyline(vertices, (static_cast<int>(value(e, 70, o, 0.0)) & 1) != 0, mirrored(e, o), o,
+                 layer);
+  }
+
+  void polyline(const Entity& e, const std::vector<Entity>& vertex_entities, const Origin& o,
+                Layer& layer) {
+    const int flags = static_cast<int>(value(e, 70, o, 0.0));
+    if (flags & (8 | 16 | 64)) fail(o.describe() + ": a 3D polyline or mesh, not a planar outline");
+    std::vector<Vertex> vertices;
+    for (const Entity& v : vertex_entities) {
+      const Origin vo{"VERTEX", v.line};
+      if (static_cast<int>(value(v, 70, vo, 0.0)) & 16) continue;  // a spline's control point
+      vertices.push_back({{required(v, 10, vo), required(v, 20, vo)}, value(v, 42, vo, 0.0)});
+    }
+    add_polyline(vertices, (flags & 1) != 0, mirrored(e, o), o, layer);
+  }
+
+  // A closed polyline is a loop. An open one gives pieces to join with the layer's lines and
+  // arcs (one whose last vertex repeats its first joins itself).
+  void add_polyline(const std::vector<Vertex>& v, bool closed, bool mirror, const Origin& o,
+                    Layer& layer) {
+    if (v.size() < 2) fail(o.describe() + ": fewer than two vertices");
+    std::vector<Piece> edges;
+    const size_t n = closed ? v.size() : v.size() - 1;
+    for (size_t i = 0; i < n; ++i)
+      edges.push_back(flip({v[i].p, v[(i + 1) % v.size()].p, v[i].bulge, o}, mirror));
+    if (!closed) {
+      layer.pieces.insert(layer.pieces.end(), edges.begin(), edges.end());
+      return;
+    }
+    ClosedLoop loop;
+    loop.edges = std::move(edges);
+    loop.origin = o;
+    layer.loops.push_back(std::move(loop));
+  }
+
+ private:
+  const DxfImportOptions& options_;
+  std::string part_;
+};
+
+Box layer_box(const Layer& layer) {
+  Box box;
+  for (const Piece& p : layer.pieces) {
+    box.add(p.from);
+    box.add(p.to);
+  }
+  for (const ClosedLoop& loop : layer.loops) {
+    for (const Piece& p : loop.edges) box.add(p.from);
+    if (loop.circle) {
+      box.add(loop.center - Vec2{loop.radius, loop.radius});
+      box.add(loop.center + Vec2{loop.radius, loop.radius});
+    }
+  }
+  return box;
+}
+
+std::string layer_list(const std::set<std::string>& layers) {
+  if (layers.empty()) return "the drawing has no entities";
+  std::string out = "layers with entities:";
+  for (const std::string& name : layers) out += " '" + name + "'";
+  return out;
+}
+
+// One loop a line: [[x, y], [x, y, bulge], ...] or {"circle": [cx, cy, r]}, numbers as
+// nlohmann writes them (they read back as the same doubles).
+std::string loops_text(const std::vector<OutLoop>& loops, Vec2 origin) {
+  const auto num = [](double v) { return nlohmann::json(v).dump(); };
+  std::string out = "[";
+  for (size_t k = 0; k < loops.size(); ++k) {
+    const OutLoop& loop = loops[k];
+    out += k == 0 ? "\n      " : ",\n      ";
+    if (loop.circle) {
+      out += "{\"circle\": [" + num(loop.center.x - origin.x) + ", " +
+             num(loop.center.y - origin.y) + ", " + num(loop.radius) + "]}";
+      continue;
+    }
+    out += "[";
+    for (size_t i = 0; i < loop.edges.size(); ++i) {
+      const Piece& p = loop.edges[i];
+      out += (i == 0 ? "[" : ", [") + num(p.from.x - origin.x) + ", " + num(p.from.y - origin.y);
+      if (p.bulge != 0.0) out += ", " + num(p.bulge);
+      out += "]";
+    }
+    out += "]";
+  }
+  return out + "\n    ]";
+}
+
+struct Imported {
+  std::string json;
+  std::vector<std::string> moving_origins, fixed_origins;  // per loop: its entities
+};
+
+Imported import_loops(std::string_view text, std::string_view source,
+                      const DxfImportOptions& options) {
+  Reader reader(options);
+  reader.read(read_groups(text));
+  for (const auto& [layer, part, name] :
+       {std::tuple{&reader.moving, "moving", options.moving_layer},
+        std::tuple{&reader.fixed, "fixed", options.fixed_layer}})
+    if (layer->empty())
+      throw DxfError{part, "no outline (line, arc, circle or polyline) on layer '" + name + "' (" +
+                               layer_list(reader.layers_seen) + ")"};
+  Box box = layer_box(reader.moving);
+  const Box fixed_box = layer_box(reader.fixed);
+  box.add(fixed_box.lo);
+  box.add(fixed_box.hi);
+  const double join = options.join_tolerance.value_or(kDxfJoinRelative * length(box.hi - box.lo));
+  std::vector<OutLoop> moving, fixed;
+  if (std::string problem = dxf::build_loops(reader.moving, join, moving); !problem.empty())
+    throw DxfError{"moving", "layer '" + options.moving_layer + "': " + problem};
+  if (std::string problem = dxf::build_loops(reader.fixed, join, fixed); !problem.empty())
+    throw DxfError{"fixed", "layer '" + options.fixed_layer + "': " + problem};
+  std::string name = options.name;
+  if (name.empty()) {
+    name = std::string(source.substr(source.find_last_of('/') + 1));
+    if (const size_t dot = name.rfind('.'); dot != std::string::npos && dot > 0) name.resize(dot);
+  }
+  std::string json = "{\n  \"name\": " + nlohmann::json(name).dump() + ",\n";
+  if (!reader.units.empty()) json += "  \"units\": " + nlohmann::json(reader.units).dump() + ",\n";
+  if (options.tolerance)
+    json += "  \"tolerance\": " + nlohmann::json(*options.tolerance).dump() + ",\n";
+  json +=
+      "  \"moving\": {\n    \"loops\": " + loops_text(moving, options.moving_origin) + "\n  },\n";
+  json += "  \"fixed\": {\n    \"enclosure\": " +
+          std::string(options.fixed_enclosure ? "true" : "false") +
+          ",\n    \"loops\": " + loops_text(fixed, {}) + "\n  }\n}\n";
+  Imported out;
+  out.json = std::move(json);
+  for (const OutLoop& loop : moving) out.moving_origins.push_back(loop.origin);
+  for (const OutLoop& loop : fixed) out.fixed_origins.push_back(loop.origin);
+  return out;
+}
+
+InputError input_error(std::string_view source, const DxfError& e) {
+  InputError error;
+  error.file = std::string(source);
+  error.part = e.part;
+  error.reason = e.reason;
+  return error;
+}
+
+}  // namespace
+
+DxfImportResult import_dxf(std::string_view dxf_text, std::string_view source,
+                           const DxfImportOptions& options) {
+  try {
+    return {import_loops(dxf_text, source, options).json, std::nullopt};
+  } catch (const DxfError& e) {
+    return {std::nullopt, input_error(source, e)};
+  }
+}
+
+DxfPairResult import_dxf_pair(std::string_view dxf_text, std::string_view source,
+                              const DxfImportOptions& options) {
+  DxfPairResult result;
+  Imported imported;
+  try {
+    imported = import_loops(dxf_text, source, options);
+  } catch (const DxfError& e) {
+    result.error = input_error(source, e);
+    return result;
+  }
+  LoadResult loaded = parse_pair(imported.json, source);
+  result.pair_json = std::move(imported.json);
+  if (loaded.ok()) {
+    result.pair = std::move(loaded.pair);
+    return result;
+  }
+  result.error = loaded.error;
+  // The pair reader numbers loops as the pair file lists them: say which entities those are.
+  const std::vector<std::string>& origins =
+      result.error->part == "moving" ? imported.moving_origins : imported.fixed_origins;
+  const int loop = result.error->loop;
+  if (loop >= 0 && loop < static_cast<int>(origins.size()))
+    result.error->reason += " (loop " + std::to_string(loop) + " is " + origins[loop] + ")";
+  return result;
+}
+
+DxfPairResult load_dxf_pair(const std::string& path, const DxfImportOptions& options) {
+  std::string text;
+  if (std::optional<InputError> error = detail::read_input_file(path, text)) {
+    DxfPairResult result;
+    result.error = std::move(error);
+    return result;
+  }
+  return import_dxf_pair(text, path, options);
+}
+
+}  // namespace cslice

@@ -1,0 +1,352 @@
+// Pair files from DXF drawings (src/parts/dxf_reader.cpp, dxf_loops.cpp): what each entity
+// draws, loops joined from loose pieces, the paper's examples drawn and read back, errors that
+// name the entity, and mutated files.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "cslice/classify.hpp"
+#include "cslice/dxf.hpp"
+#include "support/cli_run.hpp"
+#include "support/examples.hpp"
+#include "support/mutations.hpp"
+
+using namespace cslice;
+
+namespace {
+
+struct V {
+  double x, y, bulge = 0.0;
+};
+
+// A DXF drawing written group by group, as a CAD program saves one.
+class Drawing {
+ public:
+  explicit Drawing(int insunits = 4) {
+    add(0, "SECTION");
+    add(2, "HEADER");
+    add(9, "$INSUNITS");
+    add(70, std::to_string(insunits));
+    add(0, "ENDSEC");
+    add(0, "SECTION");
+    add(2, "ENTITIES");
+  }
+  Drawing& lwpolyline(const std::string& layer, const std::vector<V>& vertices, bool closed = true,
+                      bool mirrored = false) {
+    add(0, "LWPOLYLINE");
+    add(8, layer);
+    add(90, std::to_string(vertices.size()));
+    add(70, closed ? "1" : "0");
+    for (const V& v : vertices) {
+      add(10, num(v.x));
+      add(20, num(v.y));
+      if (v.bulge != 0.0) add(42, num(v.bulge));
+    }
+    if (mirrored) extrusion_down();
+    return *this;
+  }
+  Drawing& line(const std::string& layer, V a, V b) {
+    add(0, "LINE");
+    add(8, layer);
+    add(10, num(a.x));
+    add(20, num(a.y));
+    add(30, "0.0");
+    add(11, num(b.x));
+    add(21, num(b.y));
+    add(31, "0.0");
+    return *this;
+  }
+  // Counterclockwise from a0 to a1 degrees (in the entity's own frame when mirrored).
+  Drawing& arc(const std::string& layer, V c, double r, double a0, double a1,
+               bool mirrored = false) {
+    add(0, "ARC");
+    add(8, layer);
+    add(10, num(c.x));
+    add(20, num(c.y));
+    add(40, num(r));
+    add(50, num(a0));
+    add(51, num(a1));
+    if (mirrored) extrusion_down();
+    return *this;
+  }
+  Drawing& circle(const std::string& layer, V c, double r) {
+    add(0, "CIRCLE");
+    add(8, layer);
+    add(10, num(c.x));
+    add(20, num(c.y));
+    add(40, num(r));
+    return *this;
+  }
+  Drawing& entity(const std::string& type, const std::string& layer) {
+    add(0, type);
+    add(8, layer);
+    return *this;
+  }
+  Drawing& add(int code, const std::string& value) {
+    text_ += "  " + std::to_string(code) + "\n" + value + "\n";
+    return *this;
+  }
+  std::string text() const { return text_ + "  0\nENDSEC\n  0\nEOF\n"; }
+
+ private:
+  static std::string num(double v) { return nlohmann::json(v).dump(); }
+  void extrusion_down() {
+    add(210, "0.0");
+    add(220, "0.0");
+    add(230, "-1.0");
+  }
+  std::string text_;
+};
+
+DxfPairResult import(const std::string& text, DxfImportOptions options = {}) {
+  return import_dxf_pair(text, "drawing.dxf", options);
+}
+
+Pair import_ok(const std::string& text, DxfImportOptions options = {}) {
+  DxfPairResult r = import(text, options);
+  if (!r.ok()) ADD_FAILURE() << r.error->message();
+  return r.ok() ? *r.pair : Pair{};
+}
+
+std::string import_error(const std::string& text, DxfImportOptions options = {}) {
+  const DxfPairResult r = import(text, options);
+  EXPECT_FALSE(r.ok()) << "accepted:\n" << text;
+  return r.ok() ? "" : r.error->message();
+}
+
+// A 4 x 2 block for the fixed part, the same in every test that needs one.
+Drawing& with_block(Drawing& d) {
+  return d.lwpolyline("fixed", {{10, 0}, {14, 0}, {14, 2}, {10, 2}});
+}
+
+}  // namespace
+
+// A closed polyline with a bulge is the loop it draws: a 2 x 2 square whose top edge is a
+// half circle bulging out (bulge -1 travelling from (1, 1) to (-1, 1) counterclockwise round
+// the square: the arc turns clockwise, out of the square).
+TEST(DxfImport, PolylineWithBulgesIsTheLoopItDraws) {
+  Drawing d;
+  d.lwpolyline("moving", {{-1, -1}, {1, -1}, {1, 1, 1.0}, {-1, 1}});
+  const Pair pair = import_ok(with_block(d).text());
+  EXPECT_EQ(pair.moving.segment_count(), 3);
+  EXPECT_EQ(pair.moving.arc_count(), 1);
+  EXPECT_NEAR(pair.moving.area, 4 + kPi / 2, 1e-12);
+  EXPECT_NEAR(pair.fixed.area, 8, 1e-12);
+  EXPECT_EQ(pair.units, "mm");
+}
+
+// The same outline as loose lines and an arc, in any order and direction, is the same loop.
+TEST(DxfImport, LooseLinesAndArcsJoinInAnyOrderAndDirection) {
+  std::mt19937 rng(7);
+  for (int trial = 0; trial < 20; ++trial) {
+    // The square above: three lines and the half circle of centre (0, 1) from 0 to 180 deg.
+    std::vector<std::pair<V, V>> lines = {
+        {{-1, 1}, {-1, -1}}, {{-1, -1}, {1, -1}}, {{1, -1}, {1, 1}}};
+    std::shuffle(lines.begin(), lines.end(), rng);
+    Drawing d;
+    const int arc_at = static_cast<int>(rng() % 4);
+    for (int k = 0; k < 4; ++k) {
+      if (k == arc_at) d.arc("moving", {0, 1}, 1.0, 0.0, 180.0);
+      if (k == 3) break;
+      const auto [a, b] = lines[k];
+      if (rng() % 2)
+        d.line("moving", a, b);
+      else
+        d.line("moving", b, a);
+    }
+    const Pair pair = import_ok(with_block(d).text());
+    EXPECT_EQ(pair.moving.loops.size(), 1u);
+    EXPECT_EQ(pair.moving.feature_count(), 8);
+    EXPECT_NEAR(pair.moving.area, 4 + kPi / 2, 1e-12) << trial;
+  }
+}
+
+// An arc stored mirrored (extrusion along -z, as CAD programs save a mirrored copy) lies at
+// its mirror image: centre (-1, 0) in its own frame is (1, 0) in the drawing, and its
+// counterclockwise sweep there turns clockwise.
+TEST(DxfImport, MirroredArcLiesWhereItIsDrawn) {
+  Drawing direct, mirrored;
+  // A half disc right of x = 1: the diameter from (1, -1) to (1, 1), the arc round x = 2.
+  direct.line("moving", {1, 1}, {1, -1}).arc("moving", {1, 0}, 1.0, -90.0, 90.0);
+  mirrored.line("moving", {1, 1}, {1, -1}).arc("moving", {-1, 0}, 1.0, 90.0, 270.0, true);
+  const Pair a = import_ok(with_block(direct).text()), b = import_ok(with_block(mirrored).text());
+  EXPECT_NEAR(a.moving.area, kPi / 2, 1e-12);
+  EXPECT_NEAR(b.moving.area, kPi / 2, 1e-12);
+  EXPECT_NEAR(b.moving.box.hi.x, 2.0, 1e-12);
+  EXPECT_NEAR(b.moving.box.lo.x, 1.0, 1e-12);
+}
+
+// Old-style POLYLINE with VERTEX entities, and a CIRCLE.
+TEST(DxfImport, PolylineVerticesAndCircles) {
+  Drawing d;
+  d.entity("POLYLINE", "moving").add(66, "1").add(70, "1");
+  for (const V& v : std::vector<V>{{-1, -1}, {1, -1, 0.5}, {1, 1}, {-1, 1}}) {
+    d.entity("VERTEX", "moving").add(10, std::to_string(v.x)).add(20, std::to_string(v.y));
+    if (v.bulge != 0.0) d.add(42, "0.5");
+  }
+  d.entity("SEQEND", "moving");
+  d.circle("fixed", {10, 0}, 2.0);
+  const Pair pair = import_ok(d.text());
+  EXPECT_EQ(pair.moving.arc_count(), 1);
+  EXPECT_EQ(pair.moving.segment_count(), 3);
+  ASSERT_EQ(pair.fixed.loops.size(), 1u);
+  EXPECT_TRUE(pair.fixed.loops[0].is_circle());
+  EXPECT_NEAR(pair.fixed.area, 4 * kPi, 1e-12);
+}
+
+// The paper's four examples drawn as DXF (each loop a polyline, circles as circles, the moving
+// part moved by `shift` and brought back by --origin) read back as the same pairs: the same
+// features, areas and tolerance, and the same placements at random configurations.
+TEST(DxfImport, PaperExamplesDrawnAndReadBackAreTheSamePairs) {
+  std::mt19937 rng(11);
+  for (const char* name : {"knee", "cam", "fixture", "fastener"}) {
+    const Pair original = testkit::load_example(name);
+    const nlohmann::json file =
+        nlohmann::json::parse(testkit::read_file(testkit::example_path(name)));
+    const V shift{3.0, -2.0};
+    Drawing d;
+    for (const char* part : {"moving", "fixed"})
+      for (const nlohmann::json& loop : file[part]["loops"]) {
+        const double dx = std::string(part) == "moving" ? shift.x : 0.0;
+        const double dy = std::string(part) == "moving" ? shift.y : 0.0;
+        if (loop.is_object()) {
+          d.circle(part,
+                   {loop["circle"][0].get<double>() + dx, loop["circle"][1].get<double>() + dy},
+                   loop["circle"][2].get<double>());
+          continue;
+        }
+        std::vector<V> vertices;
+        for (const nlohmann::json& v : loop)
+          vertices.push_back({v[0].get<double>() + dx, v[1].get<double>() + dy,
+                              v.size() > 2 ? v[2].get<double>() : 0.0});
+        d.lwpolyline(part, vertices);
+      }
+    DxfImportOptions options;
+    options.moving_origin = {shift.x, shift.y};
+    options.fixed_enclosure = file["fixed"].value("enclosure", false);
+    options.tolerance = original.requested_tolerance;
+    const Pair pair = import_ok(d.text(), options);
+    EXPECT_EQ(pair.moving.feature_count(), original.moving.feature_count()) << name;
+    EXPECT_EQ(pair.fixed.feature_count(), original.fixed.feature_count()) << name;
+    EXPECT_NEAR(pair.moving.area, original.moving.area, 1e-9 * original.tol.size) << name;
+    EXPECT_NEAR(pair.fixed.area, original.fixed.area, 1e-9 * original.tol.size) << name;
+    EXPECT_NEAR(pair.tol.contact, original.tol.contact, 1e-12 * original.tol.size) << name;
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int differ = 0;
+    for (int k = 0; k < 2000; ++k) {
+      const Pose pose{u(rng) * original.tol.size / 2, u(rng) * original.tol.size / 2, u(rng) * kPi};
+      differ += classify(pair, pose) != classify(original, pose) ? 1 : 0;
+    }
+    EXPECT_EQ(differ, 0) << name;
+  }
+}
+
+// Each reason names the file, the part, the layer and the entity with its line.
+TEST(DxfImport, ErrorsNameTheLayerTheEntityAndItsLine) {
+  const auto expect_has = [](const std::string& message, const std::vector<std::string>& parts) {
+    for (const std::string& p : parts)
+      EXPECT_NE(message.find(p), std::string::npos) << "'" << p << "' not in: " << message;
+  };
+  Drawing open;
+  open.line("moving", {0, 0}, {1, 0}).line("moving", {1, 0}, {1, 1});
+  expect_has(
+      import_error(with_block(open).text()),
+      {"drawing.dxf", "part 'moving'", "layer 'moving'", "the outline is open", "LINE at line"});
+  Drawing three;
+  three.line("moving", {0, 0}, {1, 0})
+      .line("moving", {1, 0}, {0, 1})
+      .line("moving", {0, 1}, {0, 0});
+  three.line("moving", {0, 0}, {-1, -1});
+  expect_has(import_error(with_block(three).text()),
+             {"three outline ends meet at (0, 0)", "LINE at line"});
+  Drawing missing;
+  missing.lwpolyline("PART", {{0, 0}, {1, 0}, {0, 1}});
+  expect_has(import_error(with_block(missing).text()), {"no outline", "layer 'moving'", "'PART'"});
+  Drawing bad_number;
+  bad_number.lwpolyline("moving", {{0, 0}, {1, 0}, {0, 1}}).add(10, "1.5.2");
+  expect_has(import_error(with_block(bad_number).text()),
+             {"'1.5.2' is not a number", "LWPOLYLINE"});
+  Drawing spline;
+  spline.lwpolyline("moving", {{0, 0}, {1, 0}, {0, 1}}).entity("SPLINE", "moving");
+  expect_has(import_error(with_block(spline).text()), {"SPLINE", "approximate it by arcs"});
+  Drawing insert;
+  insert.lwpolyline("moving", {{0, 0}, {1, 0}, {0, 1}}).entity("INSERT", "fixed");
+  expect_has(import_error(with_block(insert).text()), {"part 'fixed'", "explode the block"});
+  Drawing tilted;
+  tilted.lwpolyline("moving", {{0, 0}, {1, 0}, {0, 1}}).add(210, "0.6").add(230, "0.8");
+  expect_has(import_error(with_block(tilted).text()), {"out of the XY plane"});
+  // A loop the pair reader rejects names the entity it came from.
+  Drawing crossing;
+  crossing.lwpolyline("moving", {{0, 0}, {1, 1}, {1, 0}, {0, 1}});
+  expect_has(import_error(with_block(crossing).text()),
+             {"part 'moving', loop 0", "(loop 0 is the LWPOLYLINE at line 15)"});
+  expect_has(import_error(""), {"empty"});
+  expect_has(import_error("AutoCAD Binary DXF\r\n\x1a"), {"binary DXF"});
+  expect_has(import_error("0\nSECTION\nxyz\n"), {"line 3: group code 'xyz' is not an integer"});
+}
+
+// Mutated drawings are read or refused with a message; none crashes or hangs.
+TEST(DxfImport, MutatedDrawingsAreReadOrRefusedWithAMessage) {
+  Drawing d;
+  d.lwpolyline("moving", {{-1, -1}, {1, -1, 0.3}, {1, 1}, {-1, 1}});
+  d.line("fixed", {5, 0}, {9, 0}).line("fixed", {9, 0}, {9, 3}).arc("fixed", {7, 3}, 2.0, 0, 180);
+  d.line("fixed", {5, 3}, {5, 0}).circle("fixed", {20, 0}, 1.0);
+  const std::string base = d.text();
+  ASSERT_TRUE(import(base).ok());
+  int accepted = 0, refused = 0;
+  for (unsigned seed = 0; seed < 20000; ++seed) {
+    testkit::TextMutator mutator(seed);
+    const DxfPairResult r = import(mutator.mutate(base));
+    if (r.ok()) {
+      ++accepted;
+    } else {
+      ++refused;
+      EXPECT_FALSE(r.error->message().empty());
+    }
+  }
+  EXPECT_GT(accepted, 0);
+  EXPECT_GT(refused, 0);
+}
+
+class DxfImportCli : public testkit::ScratchDirTest {
+ protected:
+  DxfImportCli() : ScratchDirTest("cslice_dxf") {}
+};
+
+// `cslice import` writes a pair that `cslice info` reads; a bad drawing is exit 2 with the
+// message and no file.
+TEST_F(DxfImportCli, WritesAPairFileOrNothing) {
+  Drawing d;
+  d.lwpolyline("PIN", {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}});
+  d.lwpolyline("FRAME", {{-5, -5}, {5, -5}, {5, 5}, {-5, 5}});
+  testkit::write_file(dir_ / "d.dxf", d.text());
+  const std::string pair = testkit::quoted((dir_ / "pair.json").string());
+  const testkit::RunResult ok =
+      testkit::run_cli("import " + testkit::quoted((dir_ / "d.dxf").string()) +
+                           " --moving PIN --fixed FRAME --enclosure --origin 0,0 -o " + pair,
+                       dir_);
+  ASSERT_EQ(ok.status, 0) << ok.err;
+  EXPECT_NE(ok.out.find("moving part 1 loop, 8 features"), std::string::npos) << ok.out;
+  const testkit::RunResult info = testkit::run_cli("info " + pair, dir_);
+  EXPECT_EQ(info.status, 0) << info.err;
+  EXPECT_NE(info.out.find("enclosure"), std::string::npos) << info.out;
+  const std::string other = testkit::quoted((dir_ / "other.json").string());
+  const testkit::RunResult bad = testkit::run_cli(
+      "import " + testkit::quoted((dir_ / "d.dxf").string()) + " --moving NONE -o " + other, dir_);
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("no outline"), std::string::npos) << bad.err;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "other.json"));
+  const testkit::RunResult join = testkit::run_cli(
+      "import " + testkit::quoted((dir_ / "d.dxf").string()) + " --join-tolerance -1 -o " + other,
+      dir_);
+  EXPECT_EQ(join.status, 2);
+  EXPECT_NE(join.err.find("--join-tolerance: expected a positive length"), std::string::npos)
+      << join.err;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "other.json"));
+}
