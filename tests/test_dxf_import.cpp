@@ -272,6 +272,9 @@ TEST(DxfImport, ErrorsNameTheLayerTheEntityAndItsLine) {
   bad_number.lwpolyline("moving", {{0, 0}, {1, 0}, {0, 1}}).add(10, "1.5.2");
   expect_has(import_error(with_block(bad_number).text()),
              {"'1.5.2' is not a number", "LWPOLYLINE"});
+  Drawing far_angle;
+  far_angle.line("moving", {1, 1}, {1, -1}).arc("moving", {1, 0}, 1.0, 1e308, 90.0);
+  expect_has(import_error(with_block(far_angle).text()), {"ARC at line", "beyond the range"});
   Drawing spline;
   spline.lwpolyline("moving", {{0, 0}, {1, 0}, {0, 1}}).entity("SPLINE", "moving");
   expect_has(import_error(with_block(spline).text()), {"SPLINE", "approximate it by arcs"});

@@ -29,7 +29,8 @@ struct CellHash {
 // same or neighbouring cells. Clamped, so that far coordinates and tiny join tolerances still
 // give an integer.
 int64_t cell(double v, double join) {
-  return static_cast<int64_t>(std::clamp(std::floor(v / join), -4e18, 4e18));
+  const double c = std::floor(v / join);
+  return std::isfinite(c) ? static_cast<int64_t>(std::clamp(c, -4e18, 4e18)) : 0;
 }
 
 // Every end's partner (its index: 2 * piece + 0 at its start, 1 at its end), or an error. A

@@ -251,14 +251,19 @@ class Reader {
   }
 
   // Object coordinates to the drawing's: with the extrusion along -z the x axis is reversed
-  // (DXF's arbitrary axis rule), so arcs turn the other way.
-  static Piece flip(Piece p, bool mirror) {
+  // (DXF's arbitrary axis rule), so arcs turn the other way. Ends must be numbers: an arc's
+  // start angle of 1e308 degrees has no cosine.
+  Piece flip(Piece p, bool mirror) const {
+    if (!(finite(p.from) && finite(p.to) && std::isfinite(p.bulge)))
+      fail(p.origin.describe() + ": its ends are beyond the range of numbers");
     if (!mirror) return p;
     p.from.x = -p.from.x;
     p.to.x = -p.to.x;
     p.bulge = -p.bulge;
     return p;
   }
+
+  static bool finite(Vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
   void line(const Entity& e, const Origin& o, Layer& layer) {
     Piece p{
