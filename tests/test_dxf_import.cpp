@@ -288,7 +288,12 @@ TEST(DxfImport, ErrorsNameTheLayerTheEntityAndItsLine) {
   Drawing crossing;
   crossing.lwpolyline("moving", {{0, 0}, {1, 1}, {1, 0}, {0, 1}});
   expect_has(import_error(with_block(crossing).text()),
-             {"part 'moving', loop 0", "(loop 0 is the LWPOLYLINE at line 15)"});
+             {"part 'moving', loop 0",
+              "(loop 0 is the LWPOLYLINE at line 15; vertex 0 starts the edge drawn by the "
+              "LWPOLYLINE at line 15)"});
+  DxfImportOptions one_layer;
+  one_layer.fixed_layer = "moving";
+  expect_has(import_error(with_block(open).text(), one_layer), {"both on layer 'moving'"});
   expect_has(import_error(""), {"empty"});
   expect_has(import_error("AutoCAD Binary DXF\r\n\x1a"), {"binary DXF"});
   expect_has(import_error("0\nSECTION\nxyz\n"), {"line 3: group code 'xyz' is not an integer"});

@@ -403,11 +403,14 @@ std::string loops_text(const std::vector<OutLoop>& loops, Vec2 origin) {
 
 struct Imported {
   std::string json;
-  std::vector<std::string> moving_origins, fixed_origins;  // per loop: its entities
+  std::vector<OutLoop> moving, fixed;  // the loops as written, each naming its entities
 };
 
 Imported import_loops(std::string_view text, std::string_view source,
                       const DxfImportOptions& options) {
+  if (options.moving_layer == options.fixed_layer)
+    throw DxfError{"", "the moving and the fixed part are both on layer '" + options.moving_layer +
+                           "': name one layer for each"};
   Reader reader(options);
   reader.read(read_groups(text));
   for (const auto& [layer, part, name] :
@@ -442,8 +445,8 @@ Imported import_loops(std::string_view text, std::string_view source,
           ",\n    \"loops\": " + loops_text(fixed, {}) + "\n  }\n}\n";
   Imported out;
   out.json = std::move(json);
-  for (const OutLoop& loop : moving) out.moving_origins.push_back(loop.origin);
-  for (const OutLoop& loop : fixed) out.fixed_origins.push_back(loop.origin);
+  out.moving = std::move(moving);
+  out.fixed = std::move(fixed);
   return out;
 }
 
@@ -484,11 +487,17 @@ DxfPairResult import_dxf_pair(std::string_view dxf_text, std::string_view source
   }
   result.error = loaded.error;
   // The pair reader numbers loops as the pair file lists them: say which entities those are.
-  const std::vector<std::string>& origins =
-      result.error->part == "moving" ? imported.moving_origins : imported.fixed_origins;
-  const int loop = result.error->loop;
-  if (loop >= 0 && loop < static_cast<int>(origins.size()))
-    result.error->reason += " (loop " + std::to_string(loop) + " is " + origins[loop] + ")";
+  // and which entity drew the edge a vertex starts.
+  const std::vector<OutLoop>& loops =
+      result.error->part == "moving" ? imported.moving : imported.fixed;
+  const int loop = result.error->loop, vertex = result.error->vertex;
+  if (loop < 0 || loop >= static_cast<int>(loops.size())) return result;
+  std::string& reason = result.error->reason;
+  reason += " (loop " + std::to_string(loop) + " is " + loops[loop].origin;
+  if (vertex >= 0 && vertex < static_cast<int>(loops[loop].edges.size()))
+    reason += "; vertex " + std::to_string(vertex) + " starts the edge drawn by " +
+              loops[loop].edges[vertex].origin.describe();
+  reason += ")";
   return result;
 }
 
