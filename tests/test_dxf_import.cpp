@@ -358,3 +358,21 @@ TEST_F(DxfImportCli, WritesAPairFileOrNothing) {
       << join.err;
   EXPECT_FALSE(std::filesystem::exists(dir_ / "other.json"));
 }
+
+// The bundled drawing (examples/drawings/gear-in-ring.dxf): a gear polyline in a ring of loose
+// lines and arcs, with annotation on other layers.
+TEST(DxfImport, BundledGearDrawing) {
+  DxfImportOptions options;
+  options.moving_layer = "GEAR";
+  options.fixed_layer = "RING";
+  options.fixed_enclosure = true;
+  const DxfPairResult r = load_dxf_pair(
+      std::string(CSLICE_SOURCE_DIR) + "/examples/drawings/gear-in-ring.dxf", options);
+  ASSERT_TRUE(r.ok()) << r.error->message();
+  EXPECT_EQ(r.pair->moving.loops.size(), 1u);
+  EXPECT_EQ(r.pair->fixed.loops.size(), 1u);
+  EXPECT_EQ(r.pair->moving.feature_count(), 64);
+  EXPECT_EQ(r.pair->fixed.feature_count(), 128);
+  EXPECT_EQ(classify(*r.pair, {0.0, 0.0, 0.0}), Placement::free);     // in the middle
+  EXPECT_EQ(classify(*r.pair, {4.0, 0.0, 0.0}), Placement::blocked);  // tooth into tooth
+}
