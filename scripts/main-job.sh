@@ -25,14 +25,15 @@ for pair in examples/*.json; do
   echo "== $name"
   "$cslice" info "$pair"
   "$cslice" render "$pair" --at "$at" -o "out/$name.svg"
-  "$cslice" slice "$pair" --theta "$theta" --json "out/$name-slice.json" --svg "out/$name-slice.svg"
+  "$cslice" slice "$pair" --theta "$theta" --json "out/$name-slice.json" --svg "out/$name-slice.svg" \
+    --dxf "out/$name-slice.dxf"
   "$cslice" critical "$pair" --json "out/$name-critical.json"
   "$cslice" critical "$pair" | tail -8
   "$cslice" compute "$pair" -o "out/$name-space.json"
   "$cslice" analyze "out/$name-space.json" > "out/$name-analysis.txt"
   "$cslice" mesh "out/$name-space.json" -o "out/$name-contact.ply"
   "$cslice" view "out/$name-space.json" -o "out/$name-view.html"
-  echo "   pictures: out/$name.svg, out/$name-slice.svg, out/$name-view.html (3D, offline); data: out/$name-{slice,critical,space}.json, out/$name-analysis.txt, out/$name-contact.ply"
+  echo "   pictures: out/$name.svg, out/$name-slice.svg, out/$name-view.html (3D, offline); data: out/$name-{slice,critical,space}.json, out/$name-slice.dxf (CAD), out/$name-analysis.txt, out/$name-contact.ply"
 done
 echo "== a pair from a CAD drawing: an 8-tooth gear in a 16-tooth ring gear (DXF, docs/dxf-import.md)"
 "$cslice" import examples/drawings/gear-in-ring.dxf --moving GEAR --fixed RING --enclosure \

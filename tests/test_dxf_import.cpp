@@ -7,15 +7,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "cslice/classify.hpp"
 #include "cslice/dxf.hpp"
+#include "cslice/slice.hpp"
 #include "support/cli_run.hpp"
 #include "support/examples.hpp"
 #include "support/mutations.hpp"
+#include "support/random_polygons.hpp"
 
 using namespace cslice;
 
@@ -375,4 +379,109 @@ TEST(DxfImport, BundledGearDrawing) {
   EXPECT_EQ(r.pair->fixed.feature_count(), 128);
   EXPECT_EQ(classify(*r.pair, {0.0, 0.0, 0.0}), Placement::free);     // in the middle
   EXPECT_EQ(classify(*r.pair, {4.0, 0.0, 0.0}), Placement::blocked);  // tooth into tooth
+}
+
+namespace {
+
+// The polylines and circles of each layer of a DXF text, read here independently of the
+// importer: per layer, each loop's absolute area (arcs included).
+std::map<std::string, std::vector<double>> loop_areas_by_layer(const std::string& text) {
+  std::vector<std::pair<int, std::string>> groups;
+  std::istringstream in(text);
+  std::string code, value;
+  while (std::getline(in, code) && std::getline(in, value))
+    groups.emplace_back(std::stoi(code), value);
+  std::map<std::string, std::vector<double>> out;
+  testkit::LoopVertices loop;
+  std::string layer, type;
+  const auto finish = [&] {
+    if (type == "SEQEND" && !loop.empty())
+      out[layer].push_back(std::fabs(testkit::loop_area(loop)));
+  };
+  double cx = 0, cy = 0, r = 0;
+  for (const auto& [c, v] : groups) {
+    if (c == 0) {
+      if (type == "CIRCLE") out[layer].push_back(kPi * r * r);
+      if (v == "POLYLINE") loop.clear();
+      type = v;
+      finish();
+      continue;
+    }
+    if (c == 8 && type == "POLYLINE") layer = v;
+    if (c == 8 && type == "CIRCLE") layer = v;
+    if (type == "VERTEX" && c == 10) loop.push_back({std::stod(v), 0.0, 0.0});
+    if (type == "VERTEX" && c == 20) loop.back().y = std::stod(v);
+    if (type == "VERTEX" && c == 42) loop.back().bulge = std::stod(v);
+    if (type == "CIRCLE" && c == 10) cx = std::stod(v);
+    if (type == "CIRCLE" && c == 20) cy = std::stod(v);
+    if (type == "CIRCLE" && c == 40) r = std::stod(v);
+  }
+  (void)cx;
+  (void)cy;
+  return out;
+}
+
+}  // namespace
+
+// A slice written as DXF: each bounded component's layer holds its outer cycle and its holes,
+// whose areas give the component's area; perfect fits are points.
+TEST(DxfExport, SliceBoundariesGiveTheComponentsAreas) {
+  const std::pair<const char*, double> cases[] = {
+      {"knee", 0.5},         {"cam", 0.3},         {"fixture", 0.0},        {"fastener", 0.0},
+      {"fastener", kPi / 2}, {"disc-in-box", 0.0}, {"square-peg-hole", 0.3}};
+  int bounded = 0;
+  for (const auto& [name, theta] : cases) {
+    const Pair pair = testkit::load_example(name);
+    const Slice slice = compute_slice(pair, theta);
+    const auto areas = loop_areas_by_layer(slice_to_dxf(pair, slice));
+    for (const FreeComponent& c : slice.free_components) {
+      const std::string layer = "FREE_" + std::to_string(c.id);
+      ASSERT_TRUE(areas.count(layer)) << name << " " << layer;
+      const std::vector<double>& loops = areas.at(layer);
+      EXPECT_EQ(loops.size(), c.boundary.size()) << name << " " << layer;
+      if (!c.bounded || loops.empty()) continue;
+      ++bounded;
+      double area = loops[0];
+      for (size_t k = 1; k < loops.size(); ++k) area -= loops[k];
+      EXPECT_NEAR(area, c.area, 1e-9 * pair.tol.size * pair.tol.size) << name << " " << layer;
+    }
+  }
+  // A square peg in a round hole: the free region is bounded by arcs (a vertex on the hole's
+  // circle); a disc in a round hole: a whole circle.
+  for (const char* json :
+       {R"({"moving": {"loops": [[[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]]]},
+            "fixed": {"enclosure": true, "loops": [{"circle": [0, 0, 1]}]}})",
+        R"({"moving": {"loops": [{"circle": [0, 0, 0.5]}]},
+            "fixed": {"enclosure": true, "loops": [{"circle": [0, 0, 1]}]}})"}) {
+    const Pair pair = *parse_pair(json, "round hole").pair;
+    const Slice slice = compute_slice(pair, 0.3);
+    ASSERT_EQ(slice.free_components.size(), 1u);
+    const auto areas = loop_areas_by_layer(slice_to_dxf(pair, slice));
+    ASSERT_EQ(areas.at("FREE_0").size(), 1u);
+    EXPECT_NEAR(areas.at("FREE_0")[0], slice.free_components[0].area, 1e-12);
+    EXPECT_GT(slice.free_components[0].area, 0.0);
+    ++bounded;
+  }
+  EXPECT_GE(bounded, 6);
+  const Pair pin = testkit::load_example("pin-exact-fit");
+  const std::string dxf = slice_to_dxf(pin, compute_slice(pin, 0.0));
+  EXPECT_NE(dxf.find("POINT\n  8\nPERFECT_FIT"), std::string::npos) << dxf;
+}
+
+// Read back by the importer: the fastener's cavity (its bounded free component at theta = 0)
+// as a part has the component's area.
+TEST(DxfExport, TheImporterReadsASliceBack) {
+  const Pair pair = testkit::load_example("fastener");
+  const Slice slice = compute_slice(pair, 0.0);
+  ASSERT_EQ(slice.free_components.size(), 2u);
+  const FreeComponent& cavity =
+      slice.free_components[0].bounded ? slice.free_components[0] : slice.free_components[1];
+  const FreeComponent& outside =
+      slice.free_components[0].bounded ? slice.free_components[1] : slice.free_components[0];
+  DxfImportOptions options;
+  options.moving_layer = "FREE_" + std::to_string(cavity.id);
+  options.fixed_layer = "FREE_" + std::to_string(outside.id);
+  const DxfPairResult r = import(slice_to_dxf(pair, slice), options);
+  ASSERT_TRUE(r.ok()) << r.error->message();
+  EXPECT_NEAR(r.pair->moving.area, cavity.area, 1e-9 * pair.tol.size * pair.tol.size);
 }

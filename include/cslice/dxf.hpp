@@ -1,6 +1,7 @@
-// Pair files from CAD drawings: the outlines on two layers of an ASCII DXF file become the
-// moving and the fixed part (docs/dxf-import.md). Lines, arcs, circles and polylines (with
-// bulges) are read; lines, arcs and open polylines are joined end to end into closed loops.
+// CAD drawings in and out (docs/dxf-import.md). In: the outlines on two layers of an ASCII DXF
+// file become the moving and the fixed part; lines, arcs, circles and polylines (with bulges)
+// are read, and lines, arcs and open polylines are joined end to end into closed loops. Out: a
+// slice's free-space boundary as exact lines and arcs.
 #pragma once
 
 #include <optional>
@@ -9,6 +10,7 @@
 
 #include "cslice/geometry.hpp"
 #include "cslice/pair.hpp"
+#include "cslice/slice.hpp"
 
 namespace cslice {
 
@@ -46,5 +48,11 @@ DxfPairResult import_dxf_pair(std::string_view dxf_text, std::string_view source
                               const DxfImportOptions& options);
 // import_dxf_pair of the file at `path`.
 DxfPairResult load_dxf_pair(const std::string& path, const DxfImportOptions& options);
+
+// The slice as a DXF drawing (R12, ASCII): each free component's boundary cycles as closed
+// POLYLINEs with bulges (a whole circle as a CIRCLE) on layer FREE_<id>, perfect fits as POINTs
+// on PERFECT_FIT, sliding fits as LINEs and ARCs on SLIDING_FIT. Coordinates are the moving
+// part's body origin's, in the pair's units.
+std::string slice_to_dxf(const Pair& pair, const Slice& slice);
 
 }  // namespace cslice

@@ -1,7 +1,8 @@
-// `cslice slice PAIR.json --theta T [--json OUT] [--svg OUT] [--mark x,y]`: the slice of
-// configuration space at one orientation, as JSON (docs/slice-format.md), as an SVG picture,
-// or as a short summary on standard output. Every output is built in memory first and the
-// files are only written once everything has succeeded, so a failure leaves none behind.
+// `cslice slice PAIR.json --theta T [--json OUT] [--svg OUT] [--dxf OUT] [--mark x,y]`: the
+// slice of configuration space at one orientation, as JSON (docs/slice-format.md), as an SVG
+// picture, as a DXF drawing, or as a short summary on standard output. Every output is built in
+// memory first and the files are only written once everything has succeeded, so a failure leaves
+// none behind.
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cslice/dxf.hpp"
 #include "cslice/render_svg.hpp"
 #include "cslice/slice.hpp"
 #include "cslice/slice_io.hpp"
@@ -24,6 +26,7 @@ struct SliceOptions {
   double theta = 0.0;
   std::string json_path;
   std::string svg_path;
+  std::string dxf_path;
   std::string mark;
   bool all_segments = false;
 };
@@ -65,8 +68,10 @@ void run_slice(const SliceOptions& options) {
   const Pair pair = load_pair_or_exit(options.pair_path);
   if (!std::isfinite(options.theta))
     throw ExitError(kExitBadInput, "--theta: expected a finite angle in radians");
-  if (options.json_path == kStdout && options.svg_path == kStdout)
-    throw ExitError(kExitBadInput, "--json and --svg cannot both go to standard output");
+  if ((options.json_path == kStdout) + (options.svg_path == kStdout) +
+          (options.dxf_path == kStdout) >
+      1)
+    throw ExitError(kExitBadInput, "only one of --json, --svg and --dxf can go to standard output");
   SlicePictureOptions picture;
   picture.show_all_segments = options.all_segments;
   if (!options.mark.empty()) picture.mark = parse_point_or_exit(options.mark, "--mark");
@@ -77,6 +82,7 @@ void run_slice(const SliceOptions& options) {
     outputs.emplace_back(options.json_path, slice_to_json(pair, slice));
   if (!options.svg_path.empty())
     outputs.emplace_back(options.svg_path, render_slice_svg(pair, slice, picture));
+  if (!options.dxf_path.empty()) outputs.emplace_back(options.dxf_path, slice_to_dxf(pair, slice));
   if (outputs.empty()) {
     std::cout << summary_text(pair, slice, picture.mark) << std::flush;
     return;
@@ -91,7 +97,7 @@ void register_slice(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "slice",
       "Compute the configuration-space slice at one orientation: contact segments, free\n"
-      "components and the contact graph. Without --json or --svg, prints a summary.");
+      "components and the contact graph. Without --json, --svg or --dxf, prints a summary.");
   cmd->add_option("pair", options->pair_path, "Pair file (JSON, see docs/pair-format.md)")
       ->required();
   cmd->add_option("--theta", options->theta, "Orientation of the moving part, radians")->required();
@@ -99,6 +105,9 @@ void register_slice(CLI::App& app) {
                   "Write the slice as JSON (docs/slice-format.md); - for standard output");
   cmd->add_option("--svg", options->svg_path,
                   "Write a picture of the slice as SVG; - for standard output");
+  cmd->add_option("--dxf", options->dxf_path,
+                  "Write the free-space boundary as a DXF drawing: exact lines and arcs, a layer "
+                  "per free component (docs/dxf-import.md); - for standard output");
   cmd->add_option("--mark", options->mark,
                   "Mark the configuration x,y in the SVG and say which component holds it");
   cmd->add_flag("--all-segments", options->all_segments,
