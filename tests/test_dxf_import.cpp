@@ -367,8 +367,8 @@ TEST_F(DxfImportCli, WritesAPairFileOrNothing) {
 // lines and arcs, with annotation on other layers.
 TEST(DxfImport, BundledGearDrawing) {
   DxfImportOptions options;
-  options.moving_layer = "GEAR";
-  options.fixed_layer = "RING";
+  options.moving_layer = "gear";  // layer names ignore case, as in CAD programs
+  options.fixed_layer = "Ring";
   options.fixed_enclosure = true;
   const DxfPairResult r = load_dxf_pair(
       std::string(CSLICE_SOURCE_DIR) + "/examples/drawings/gear-in-ring.dxf", options);

@@ -7,6 +7,8 @@
 // LWPOLYLINE declaring 99999999999 vertices (it sizes an array from the count) and asked for
 // 32 GB on 2e9, where bad input must get a message and exit status 2. The few entities a
 // part outline uses are short to read, and every value is checked as it is taken.
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -94,6 +96,15 @@ struct Entity {
   }
 };
 
+// Layer names match as CAD programs match them, ignoring case (R12 files store them upper
+// case, whatever the user typed).
+bool same_layer(std::string_view a, std::string_view b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](char x, char y) {
+    return std::tolower(static_cast<unsigned char>(x)) ==
+           std::tolower(static_cast<unsigned char>(y));
+  });
+}
+
 // The drawing's two layers, filled entity by entity.
 class Reader {
  public:
@@ -173,11 +184,11 @@ class Reader {
   Layer* layer_of(const Entity& e, std::string& part) {
     const std::string name(trim(e.layer()));
     layers_seen.insert(name);
-    if (name == options_.moving_layer) {
+    if (same_layer(name, options_.moving_layer)) {
       part = "moving";
       return &moving;
     }
-    if (name == options_.fixed_layer) {
+    if (same_layer(name, options_.fixed_layer)) {
       part = "fixed";
       return &fixed;
     }
@@ -408,7 +419,7 @@ struct Imported {
 
 Imported import_loops(std::string_view text, std::string_view source,
                       const DxfImportOptions& options) {
-  if (options.moving_layer == options.fixed_layer)
+  if (same_layer(options.moving_layer, options.fixed_layer))
     throw DxfError{"", "the moving and the fixed part are both on layer '" + options.moving_layer +
                            "': name one layer for each"};
   Reader reader(options);
