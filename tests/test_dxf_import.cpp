@@ -279,6 +279,10 @@ TEST(DxfImport, ErrorsNameTheLayerTheEntityAndItsLine) {
   Drawing far_angle;
   far_angle.line("moving", {1, 1}, {1, -1}).arc("moving", {1, 0}, 1.0, 1e308, 90.0);
   expect_has(import_error(with_block(far_angle).text()), {"ARC at line", "beyond the range"});
+  Drawing huge_flags;
+  huge_flags.entity("LWPOLYLINE", "moving").add(70, "1e300").add(10, "0").add(20, "0");
+  huge_flags.add(10, "1").add(20, "0").add(10, "0").add(20, "1");
+  expect_has(import_error(with_block(huge_flags).text()), {"flags (group code 70) 1e+300"});
   Drawing spline;
   spline.lwpolyline("moving", {{0, 0}, {1, 0}, {0, 1}}).entity("SPLINE", "moving");
   expect_has(import_error(with_block(spline).text()), {"SPLINE", "approximate it by arcs"});

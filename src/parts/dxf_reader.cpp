@@ -243,6 +243,14 @@ class Reader {
       if (g.code == code) return number(g, origin);
     return fallback;
   }
+  // The entity's flags (group code 70, bits of a 16-bit integer; 0 when absent).
+  int flags(const Entity& e, const Origin& origin) const {
+    const double v = value(e, 70, origin, 0.0);
+    if (!(v >= 0.0 && v <= 65535.0 && v == std::floor(v)))
+      fail(origin.describe() + ": flags (group code 70) " + detail::format_number(v) +
+           " are not a 16-bit integer");
+    return static_cast<int>(v);
+  }
   double required(const Entity& e, int code, const Origin& origin) const {
     for (const Group& g : e.groups)
       if (g.code == code) return number(g, origin);
@@ -323,21 +331,21 @@ class Reader {
       if (g.code == 20) vertices.back().p.y = number(g, o);
       if (g.code == 42) vertices.back().bulge = number(g, o);
     }
-    add_polyline(vertices, (static_cast<int>(value(e, 70, o, 0.0)) & 1) != 0, mirrored(e, o), o,
-                 layer);
+    add_polyline(vertices, (flags(e, o) & 1) != 0, mirrored(e, o), o, layer);
   }
 
   void polyline(const Entity& e, const std::vector<Entity>& vertex_entities, const Origin& o,
                 Layer& layer) {
-    const int flags = static_cast<int>(value(e, 70, o, 0.0));
-    if (flags & (8 | 16 | 64)) fail(o.describe() + ": a 3D polyline or mesh, not a planar outline");
+    const int polyline_flags = flags(e, o);
+    if (polyline_flags & (8 | 16 | 64))
+      fail(o.describe() + ": a 3D polyline or mesh, not a planar outline");
     std::vector<Vertex> vertices;
     for (const Entity& v : vertex_entities) {
       const Origin vo{"VERTEX", v.line};
-      if (static_cast<int>(value(v, 70, vo, 0.0)) & 16) continue;  // a spline's control point
+      if (flags(v, vo) & 16) continue;  // a spline's control point
       vertices.push_back({{required(v, 10, vo), required(v, 20, vo)}, value(v, 42, vo, 0.0)});
     }
-    add_polyline(vertices, (flags & 1) != 0, mirrored(e, o), o, layer);
+    add_polyline(vertices, (polyline_flags & 1) != 0, mirrored(e, o), o, layer);
   }
 
   // A closed polyline is a loop. An open one gives pieces to join with the layer's lines and
