@@ -352,6 +352,21 @@ TEST_F(DxfImportCli, WritesAPairFileOrNothing) {
   const testkit::RunResult info = testkit::run_cli("info " + pair, dir_);
   EXPECT_EQ(info.status, 0) << info.err;
   EXPECT_NE(info.out.find("enclosure"), std::string::npos) << info.out;
+  EXPECT_EQ(ok.err, "");
+  // A moving part drawn away from the drawing's origin gets a note (and its pair).
+  Drawing away;
+  away.lwpolyline("PIN", {{99, 49}, {101, 49}, {101, 51}, {99, 51}});
+  away.lwpolyline("FRAME", {{90, 40}, {110, 40}, {110, 60}, {90, 60}});
+  testkit::write_file(dir_ / "away.dxf", away.text());
+  const testkit::RunResult noted =
+      testkit::run_cli("import " + testkit::quoted((dir_ / "away.dxf").string()) +
+                           " --moving PIN --fixed FRAME --enclosure -o " + pair,
+                       dir_);
+  EXPECT_EQ(noted.status, 0) << noted.err;
+  EXPECT_NE(noted.err.find("note: the moving part turns about the drawing point 0,0, outside its "
+                           "box ((99, 49) to (101, 51))"),
+            std::string::npos)
+      << noted.err;
   const std::string other = testkit::quoted((dir_ / "other.json").string());
   const testkit::RunResult bad = testkit::run_cli(
       "import " + testkit::quoted((dir_ / "d.dxf").string()) + " --moving NONE -o " + other, dir_);

@@ -39,6 +39,14 @@ void run_import(const ImportOptions& opts) {
   const Pair& pair = *result.pair;
   const bool to_stdout = opts.output == kStdout;
   deliver_output(opts.output, std::move(result.pair_json));
+  // A part drawn away from the drawing's origin turns about a point outside it: allowed (a
+  // lever about its pivot), but more often a forgotten --origin.
+  const Box& box = pair.moving.box;
+  if (box.lo.x > 0.0 || box.lo.y > 0.0 || box.hi.x < 0.0 || box.hi.y < 0.0)
+    std::cerr << "cslice: note: the moving part turns about the drawing point " << opts.origin
+              << ", outside its box (" << format_point(box.lo + options.moving_origin) << " to "
+              << format_point(box.hi + options.moving_origin)
+              << "); --origin x,y names the point it turns about\n";
   if (!to_stdout)
     std::cout << "wrote " << opts.output << ": pair '" << pair.name << "', moving part "
               << loops_summary(pair.moving) << ", fixed part " << loops_summary(pair.fixed) << "\n";
