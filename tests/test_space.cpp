@@ -244,6 +244,10 @@ TEST(Space, TheFileIsTheDumpOfOneDocument) {
                                 << dumped.substr(differ, 40) << "'";
     EXPECT_EQ(document["slices"].size(), space.slices.size()) << name;
     EXPECT_EQ(document["correspondence"].size(), space.correspondence.size()) << name;
+    // `cslice compute` writes the same text to its file as it is made.
+    std::ostringstream streamed;
+    write_space_json(streamed, pair, space, true);
+    EXPECT_TRUE(streamed.str() == text) << name;
   }
 }
 

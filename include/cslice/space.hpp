@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <iosfwd>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -236,6 +237,9 @@ inline constexpr int kSpaceFormatVersion = 3;
 // is self-contained. Without timing the text depends only on the pair and the options'
 // screening.
 std::string space_to_json(const Pair& pair, const SlicedSpace& space, bool with_timing = true);
+// The same text written to `out` as it is made, never whole in memory.
+void write_space_json(std::ostream& out, const Pair& pair, const SlicedSpace& space,
+                      bool with_timing = true);
 
 // The pair in the pair-file format (docs/pair-format.md), as a space file embeds it: its
 // validated loops as the file listed them (same order, orientation, vertices and bulges, bit

@@ -32,7 +32,7 @@ void run(const ComputeCommand& cmd) {
   options.progress = progress->report();
   const SlicedSpace space = compute_space(pair, options);
   progress.reset();  // the line is cleared before any message
-  deliver_output(cmd.out_path, space_to_json(pair, space));
+  deliver_written(cmd.out_path, [&](std::ostream& out) { write_space_json(out, pair, space); });
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <stdexcept>
@@ -35,6 +36,10 @@ void deliver_outputs(std::vector<std::pair<std::string, std::string>> outputs);
 // The same for one output, moved in: a braced list would copy the text (a space file of a
 // larger pair is a gigabyte).
 void deliver_output(const std::string& path, std::string text);
+// The same for one output written as it is made (a space file of a larger pair is a gigabyte
+// of text): to a temporary file renamed into place when `write` has finished, removed if it
+// throws. Standard output gets the text once it is whole, as every output does.
+void deliver_written(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 // Throws ExitError(2) unless a --threads value is 0 (every core) or more.
 void check_threads_or_exit(int threads);

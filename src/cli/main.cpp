@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
   } catch (const std::bad_alloc&) {
     // Not a fault of the input or of cslice: the machine's memory ran out. The critical
     // orientations and slices of a pair grow fast with its features (600 features: 19,717
-    // orientations, 6 GB to compute its space).
+    // orientations, 4 GB to compute its space).
     std::cerr << "cslice: out of memory: this computation needs more memory than is available "
                  "(docs/performance.md, larger pairs)\n";
     return 3;

@@ -1,7 +1,9 @@
 // Output files of the commands: all or nothing.
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
+#include <sstream>
 
 #include <unistd.h>  // getpid, for unique temporary names
 
@@ -11,18 +13,37 @@ namespace cslice::cli {
 
 namespace {
 
-// Writes to a temporary file beside `path`, so a failed write never leaves a half file.
-std::string write_temp(const std::string& path, const std::string& text) {
+// Writes to a temporary file beside `path`, so a failed write never leaves a half file; the
+// temporary goes too when `write` throws (out of memory halfway).
+std::string write_temp(const std::string& path, const std::function<void(std::ostream&)>& write) {
   const std::string temp = path + ".tmp" + std::to_string(::getpid());
   std::ofstream out(temp, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) {
+  bool written = false;
+  try {
+    if (out) write(out);
+    out.close();
+    written = static_cast<bool>(out);
+  } catch (...) {
+    std::error_code ignored;
+    out.close();
+    std::filesystem::remove(temp, ignored);
+    throw;
+  }
+  if (!written) {
     std::error_code ignored;
     std::filesystem::remove(temp, ignored);
     throw ExitError(kExitBadInput, "cannot write '" + path + "'");
   }
   return temp;
+}
+std::string write_temp(const std::string& path, const std::string& text) {
+  return write_temp(path, [&](std::ostream& out) { out << text; });
+}
+
+void rename_into_place(const std::string& temp, const std::string& path) {
+  std::error_code error;
+  std::filesystem::rename(temp, path, error);
+  if (error) throw ExitError(kExitBadInput, "cannot write '" + path + "': " + error.message());
 }
 
 // All outputs or none: every file goes to a temporary first and is renamed into place only
@@ -36,11 +57,7 @@ void write_files(const std::vector<std::pair<std::string, std::string>>& outputs
     for (const auto& t : temps) std::filesystem::remove(t.first, ignored);
     throw;
   }
-  for (const auto& [temp, path] : temps) {
-    std::error_code error;
-    std::filesystem::rename(temp, path, error);
-    if (error) throw ExitError(kExitBadInput, "cannot write '" + path + "': " + error.message());
-  }
+  for (const auto& [temp, path] : temps) rename_into_place(temp, path);
 }
 
 }  // namespace
@@ -61,6 +78,16 @@ void deliver_output(const std::string& path, std::string text) {
   std::vector<std::pair<std::string, std::string>> outputs;
   outputs.emplace_back(path, std::move(text));
   deliver_outputs(std::move(outputs));
+}
+
+void deliver_written(const std::string& path, const std::function<void(std::ostream&)>& write) {
+  if (path == kStdout) {  // made whole first: printed text cannot be taken back
+    std::ostringstream text;
+    write(text);
+    std::cout << std::move(text).str() << std::flush;
+    return;
+  }
+  rename_into_place(write_temp(path, write), path);
 }
 
 }  // namespace cslice::cli
