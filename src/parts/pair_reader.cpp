@@ -326,10 +326,17 @@ std::optional<InputError> detail::read_input_file(const std::string& path, std::
     return InputError{path, "", -1, -1, "is a directory, not a file"};
   std::ifstream in(path, std::ios::binary);
   if (!in) return InputError{path, "", -1, -1, std::string("cannot open: ") + std::strerror(errno)};
-  std::ostringstream out;
-  out << in.rdbuf();
+  // Straight into the string: through a string stream the text was held twice (a space file
+  // of a larger pair is a gigabyte).
+  // Sized first where the file has a size, so the string is not regrown (to twice the text).
+  text.clear();
+  std::error_code size_error;
+  const auto size = std::filesystem::file_size(path, size_error);
+  if (!size_error) text.reserve(static_cast<size_t>(size));
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0)
+    text.append(buffer, static_cast<size_t>(in.gcount()));
   if (in.bad()) return InputError{path, "", -1, -1, "read error"};
-  text = std::move(out).str();
   return std::nullopt;
 }
 

@@ -9,13 +9,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "cslice/space.hpp"
 #include "parts/json_text.hpp"
+#include "parts/validate.hpp"
 #include "space/space_build.hpp"
 
 namespace cslice {
@@ -388,11 +388,17 @@ SlicedSpace read_space(const json& top, long long correspondence_entries, const 
 
 }  // namespace
 
-LoadSpaceResult parse_space(std::string_view json_text, std::string_view source, int threads) {
+namespace {
+
+// The space from its text; `release`, when given, frees the text as soon as it is parsed (a
+// larger pair's file is a gigabyte, and recomputing its slices needs the memory).
+LoadSpaceResult read_space_text(std::string_view json_text, std::string_view source, int threads,
+                                const std::function<void()>& release) {
   LoadSpaceResult result;
   try {
     long long correspondence_entries = 0;
     const json top = parse_text(json_text, correspondence_entries);
+    if (release) release();
     check_format(top);
     Pair pair = read_pair(top);
     result.space = read_space(top, correspondence_entries, pair, threads);
@@ -412,26 +418,20 @@ LoadSpaceResult parse_space(std::string_view json_text, std::string_view source,
   return result;
 }
 
+}  // namespace
+
+LoadSpaceResult parse_space(std::string_view json_text, std::string_view source, int threads) {
+  return read_space_text(json_text, source, threads, {});
+}
+
 LoadSpaceResult load_space(const std::string& path, int threads) {
-  LoadSpaceResult result;
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    result.error = InputError{path, "", -1, -1, "is a directory, not a file"};
+  std::string text;
+  if (std::optional<InputError> error = detail::read_input_file(path, text)) {
+    LoadSpaceResult result;
+    result.error = std::move(error);
     return result;
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    result.error =
-        InputError{path, "", -1, -1, std::string("cannot open: ") + std::strerror(errno)};
-    return result;
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) {
-    result.error = InputError{path, "", -1, -1, "read error"};
-    return result;
-  }
-  return parse_space(text.str(), path, threads);
+  return read_space_text(text, path, threads, [&] { std::string().swap(text); });
 }
 
 }  // namespace cslice
