@@ -176,6 +176,19 @@ TEST_F(SpaceFile, TamperedSummariesAreErrors) {
   expect_mentions(
       tampered_error("cam", [](auto& j) { j["slices"][7]["components"][0]["area"] = 0.05; }),
       "field \"slices[7].components[0].area\": the file says 0.05");
+  // The slices' summaries are read before the slices are recomputed, and checked after.
+  expect_mentions(
+      tampered_error("cam", [](auto& j) { j["slices"][7]["realizable_labels"][0][1] = 999; }),
+      "field \"slices[7].realizable_labels\": differ from the recomputed ones [[");
+  expect_mentions(
+      tampered_error("cam", [](auto& j) { j["slices"][7]["realizable_labels"][0] = "x"; }),
+      "field \"slices[7].realizable_labels\": differ from the recomputed ones [[");
+  expect_mentions(
+      tampered_error("cam", [](auto& j) { j["slices"][7]["components"][0]["area"] = "big"; }),
+      "field \"slices[7].components[0].area\": must be a number, got string");
+  expect_mentions(
+      tampered_error("cam", [](auto& j) { j["slices"][7]["components"][0]["bounded"] = 1; }),
+      "field \"slices[7].components[0].bounded\": must be true or false, got number");
   expect_mentions(tampered_error("cam", [](auto& j) { j["critical_orientations"].erase(0); }),
                   "field \"critical_orientations\": the file says 11, recomputed 12");
   expect_mentions(tampered_error("cam", [](auto& j) { j["slices"].erase(4); }),

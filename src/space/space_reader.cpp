@@ -273,47 +273,96 @@ std::vector<detail::PlannedSlice> read_plan(const json& stored, const Pair& pair
   return out;
 }
 
+// What the file says of one slice, read from its document before the slices are recomputed
+// (the documents of a larger pair's slices took a gigabyte more than these). Fields of the
+// wrong type are named here, as they are read; what the values must be is checked against
+// the recomputed slice (check_slice).
+struct StoredSlice {
+  struct Component {
+    bool bounded = false;
+    json area;  // a number, null, or {"type": name} for a value of another type
+  };
+  long long free_components = 0, bounded_free_components = 0, contact_graph_edges = 0;
+  std::vector<Component> components;
+  // The realizable labels as pairs of numbers; nullopt when an entry is not two numbers (it
+  // then differs from any recomputed label).
+  std::optional<std::vector<std::pair<double, double>>> labels;
+};
+
+StoredSlice read_stored_slice(const json& stored, size_t i) {
+  const std::string where = indexed("slices", i);
+  StoredSlice s;
+  s.free_components = integer_field(stored, where, "free_components");
+  s.bounded_free_components = integer_field(stored, where, "bounded_free_components");
+  const json& components = require_array(stored, where, "components");
+  for (size_t c = 0; c < components.size(); ++c) {
+    const std::string cw = indexed(field_name(where, "components"), c);
+    StoredSlice::Component& sc = s.components.emplace_back();
+    sc.bounded = bool_field(components[c], cw, "bounded");
+    // A value of another type is kept as {"type": its name} for the message.
+    const json& area = require(components[c], cw, "area");
+    sc.area =
+        area.is_number() || area.is_null() ? area : json::object({{"type", area.type_name()}});
+  }
+  s.labels.emplace();
+  for (const json& l : require_array(stored, where, "realizable_labels")) {
+    if (!l.is_array() || l.size() != 2 || !l[0].is_number() || !l[1].is_number()) {
+      s.labels.reset();
+      break;
+    }
+    s.labels->emplace_back(l[0].get<double>(), l[1].get<double>());
+  }
+  s.contact_graph_edges = integer_field(stored, where, "contact_graph_edges");
+  return s;
+}
+
 // Every summary the file gives for slice i against the recomputed slice.
-void check_slice(const json& stored, size_t i, const SpaceSlice& s, const Pair& pair) {
+void check_slice(const StoredSlice& stored, size_t i, const SpaceSlice& s, const Pair& pair) {
   const std::string where = indexed("slices", i);
   const std::string at = " (theta " + number_text(s.theta) + ")";
   const Slice& slice = s.slice;
   int bounded = 0;
   for (const FreeComponent& c : slice.free_components) bounded += c.bounded ? 1 : 0;
-  expect_count(field_name(where, "free_components"),
-               integer_field(stored, where, "free_components"),
+  expect_count(field_name(where, "free_components"), stored.free_components,
                static_cast<long long>(slice.free_components.size()), at);
-  expect_count(field_name(where, "bounded_free_components"),
-               integer_field(stored, where, "bounded_free_components"), bounded, at);
-  const json& components = require_array(stored, where, "components");
-  expect_count(field_name(where, "components"), static_cast<long long>(components.size()),
+  expect_count(field_name(where, "bounded_free_components"), stored.bounded_free_components,
+               bounded, at);
+  expect_count(field_name(where, "components"), static_cast<long long>(stored.components.size()),
                static_cast<long long>(slice.free_components.size()), " components" + at);
   const double area_slack = pair.tol.geometric * pair.tol.size;
-  for (size_t c = 0; c < components.size(); ++c) {
+  for (size_t c = 0; c < stored.components.size(); ++c) {
     const std::string cw = indexed(field_name(where, "components"), c);
     const FreeComponent& fc = slice.free_components[c];
-    if (bool_field(components[c], cw, "bounded") != fc.bounded)
+    if (stored.components[c].bounded != fc.bounded)
       fail_field(field_name(cw, "bounded"), std::string("the file says ") +
                                                 (fc.bounded ? "false" : "true") + ", recomputed " +
                                                 (fc.bounded ? "true" : "false"));
-    const json& area = require(components[c], cw, "area");
+    const json& area = stored.components[c].area;
     if (!fc.bounded || !std::isfinite(fc.area)) {
       if (!area.is_null()) fail_field(field_name(cw, "area"), "must be null for this component");
       continue;
     }
+    if (area.is_object())  // another type, as read_number names it
+      fail_field(field_name(cw, "area"),
+                 "must be a number, got " + area["type"].get<std::string>());
     const double a = read_number(area, field_name(cw, "area"));
     if (!close(a, fc.area, area_slack))
       fail_field(field_name(cw, "area"),
                  "the file says " + number_text(a) + ", recomputed " + number_text(fc.area) + at);
   }
-  json labels = json::array();
-  for (const SegmentLabel& l : realizable_labels(slice))
-    labels.push_back(json::array({l.moving_feature, l.fixed_feature}));
-  if (require_array(stored, where, "realizable_labels") != labels)
+  const std::vector<SegmentLabel> labels = realizable_labels(slice);
+  bool same = stored.labels && stored.labels->size() == labels.size();
+  for (size_t k = 0; same && k < labels.size(); ++k)
+    same = (*stored.labels)[k].first == labels[k].moving_feature &&
+           (*stored.labels)[k].second == labels[k].fixed_feature;
+  if (!same) {
+    json recomputed = json::array();
+    for (const SegmentLabel& l : labels)
+      recomputed.push_back(json::array({l.moving_feature, l.fixed_feature}));
     fail_field(field_name(where, "realizable_labels"),
-               "differ from the recomputed ones " + labels.dump() + at);
-  expect_count(field_name(where, "contact_graph_edges"),
-               integer_field(stored, where, "contact_graph_edges"),
+               "differ from the recomputed ones " + recomputed.dump() + at);
+  }
+  expect_count(field_name(where, "contact_graph_edges"), stored.contact_graph_edges,
                static_cast<long long>(slice.contact_graph.edges.size()), at);
 }
 
@@ -348,8 +397,7 @@ void check_counts(const json& top, const SlicedSpace& space) {
                static_cast<long long>(space.slices.size()));
 }
 
-SlicedSpace read_space(const json& top, long long correspondence_entries, const Pair& pair,
-                       int threads) {
+SlicedSpace read_space(json& top, long long correspondence_entries, const Pair& pair, int threads) {
   SlicedSpace space;
   space.criticals = read_criticals(top, pair);
   const json& interpolation = require(top, "", "interpolation");
@@ -365,11 +413,14 @@ SlicedSpace read_space(const json& top, long long correspondence_entries, const 
                                              number_text(space.max_step));
   const json& stored = require_array(top, "", "slices");
   const auto plan = read_plan(stored, pair, space.criticals, space.max_step);
+  std::vector<StoredSlice> summaries;
+  for (size_t i = 0; i < stored.size(); ++i) summaries.push_back(read_stored_slice(stored[i], i));
+  top.erase("slices");  // its documents are read: free them before the slices take the memory
   // Everything the recomputation needs is known to be well formed; now the slices.
   // As compute_space: the side slices reuse the models built for the intermediate ones.
   detail::KnownModels models;
   space.slices = detail::compute_slices(pair, plan, {threads, true, true}, {}, &models);
-  for (size_t i = 0; i < stored.size(); ++i) check_slice(stored[i], i, space.slices[i], pair);
+  for (size_t i = 0; i < summaries.size(); ++i) check_slice(summaries[i], i, space.slices[i], pair);
   space.correspondence = detail::slice_correspondences(space.slices);
   space.topology = detail::compute_topology(pair, space, {threads, false, true}, &models);
   check_topology(top, space, correspondence_entries);
@@ -397,7 +448,7 @@ LoadSpaceResult read_space_text(std::string_view json_text, std::string_view sou
   LoadSpaceResult result;
   try {
     long long correspondence_entries = 0;
-    const json top = parse_text(json_text, correspondence_entries);
+    json top = parse_text(json_text, correspondence_entries);
     if (release) release();
     check_format(top);
     Pair pair = read_pair(top);
