@@ -11,6 +11,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "cslice/classify.hpp"
@@ -286,9 +287,6 @@ TEST(DxfImport, ErrorsNameTheLayerTheEntityAndItsLine) {
   Drawing spline;
   spline.lwpolyline("moving", {{0, 0}, {1, 0}, {0, 1}}).entity("SPLINE", "moving");
   expect_has(import_error(with_block(spline).text()), {"SPLINE", "approximate it by arcs"});
-  Drawing insert;
-  insert.lwpolyline("moving", {{0, 0}, {1, 0}, {0, 1}}).entity("INSERT", "fixed");
-  expect_has(import_error(with_block(insert).text()), {"part 'fixed'", "explode the block"});
   Drawing tilted;
   tilted.lwpolyline("moving", {{0, 0}, {1, 0}, {0, 1}}).add(210, "0.6").add(230, "0.8");
   expect_has(import_error(with_block(tilted).text()), {"out of the XY plane"});
@@ -328,6 +326,74 @@ TEST(DxfImport, MutatedDrawingsAreReadOrRefusedWithAMessage) {
   }
   EXPECT_GT(accepted, 0);
   EXPECT_GT(refused, 0);
+}
+
+// A drawing whose BLOCKS section defines `blocks` (name, base point, the entities' text as a
+// Drawing writes them), then whose entities are `entities`.
+std::string with_blocks(const std::vector<std::tuple<std::string, V, std::string>>& blocks,
+                        const std::string& entities) {
+  std::string text = "  0\nSECTION\n  2\nBLOCKS\n";
+  for (const auto& [name, base, body] : blocks)
+    text += "  0\nBLOCK\n  8\n0\n  2\n" + name + "\n 10\n" + std::to_string(base.x) + "\n 20\n" +
+            std::to_string(base.y) + "\n" + body + "  0\nENDBLK\n";
+  return text + "  0\nENDSEC\n  0\nSECTION\n  2\nENTITIES\n" + entities + "  0\nENDSEC\n  0\nEOF\n";
+}
+
+// The entities of a Drawing, without its sections.
+std::string body(Drawing& d) {
+  const std::string text = d.text();
+  const size_t from = text.find("ENTITIES\n") + 9, to = text.rfind("  0\nENDSEC");
+  return text.substr(from, to - from);
+}
+
+std::string insert(const std::string& layer, const std::string& block, V at, double scale_x,
+                   double scale_y, double degrees) {
+  return "  0\nINSERT\n  8\n" + layer + "\n  2\n" + block + "\n 10\n" + std::to_string(at.x) +
+         "\n 20\n" + std::to_string(at.y) + "\n 41\n" + std::to_string(scale_x) + "\n 42\n" +
+         std::to_string(scale_y) + "\n 50\n" + std::to_string(degrees) + "\n";
+}
+
+// Blocks are drawn where INSERTs place them: moved from their base point, scaled, turned and
+// moved; mirrored by a negative scale; their layer-0 entities on the INSERT's layer; blocks
+// within blocks.
+TEST(DxfImport, BlocksAreDrawnWhereTheyAreInserted) {
+  Drawing peg, cap, frame;
+  // A 1 x 1 square with a half-disc cap on its right side, base point at its lower left.
+  peg.lwpolyline("0", {{0, 0}, {1, 0, 1.0}, {1, 1}, {0, 1}});
+  frame.lwpolyline("fixed", {{-20, -20}, {20, -20}, {20, 20}, {-20, 20}});
+  cap.add(0, "INSERT").add(8, "0").add(2, "PEG").add(10, "0").add(20, "0");
+  const std::string blocks_text = body(peg), frame_text = body(frame);
+  const double area = 1 + kPi / 8;
+  // Doubled and turned a quarter: the square's corner at (3, 4), the cap on top.
+  Pair pair = import_ok(with_blocks(
+      {{"PEG", {0, 0}, blocks_text}, {"FRAME", {0, 0}, frame_text}},
+      insert("moving", "peg", {3, 4}, 2, 2, 90) + insert("LAYOUT", "FRAME", {0, 0}, 1, 1, 0)));
+  EXPECT_NEAR(pair.moving.area, 4 * area, 1e-12);
+  EXPECT_NEAR(pair.moving.box.lo.x, 1.0, 1e-12);
+  EXPECT_NEAR(pair.moving.box.hi.x, 3.0, 1e-12);
+  EXPECT_NEAR(pair.moving.box.hi.y, 7.0, 1e-12);  // 4 + 2 + the cap's radius 1
+  EXPECT_NEAR(pair.fixed.area, 1600, 1e-9);       // FRAME's entity keeps its own layer
+  // Mirrored by a negative x scale: the cap on the left, the same area.
+  pair = import_ok(with_blocks({{"PEG", {0, 0}, blocks_text}},
+                               insert("moving", "PEG", {0, 0}, -1, 1, 0) + frame_text));
+  EXPECT_NEAR(pair.moving.area, area, 1e-12);
+  EXPECT_NEAR(pair.moving.box.lo.x, -1.5, 1e-12);
+  // A block inserting the block, each moving it by its base point.
+  pair = import_ok(with_blocks({{"PEG", {1, 1}, blocks_text}, {"CAP", {-5, 0}, body(cap)}},
+                               insert("moving", "CAP", {0, 0}, 1, 1, 0) + frame_text));
+  EXPECT_NEAR(pair.moving.area, area, 1e-12);
+  EXPECT_NEAR(pair.moving.box.lo.x, 4.0, 1e-12);  // -1 for PEG's base, +5 for CAP's
+  EXPECT_NEAR(pair.moving.box.lo.y, -1.0, 1e-12);
+  // Refused: an uneven scale (the cap would be half an ellipse), a block inserting itself.
+  const std::string uneven = import_error(with_blocks(
+      {{"PEG", {0, 0}, blocks_text}}, insert("moving", "PEG", {0, 0}, 1, 2, 0) + frame_text));
+  EXPECT_NE(uneven.find("in block 'PEG' (the INSERT at line"), std::string::npos) << uneven;
+  EXPECT_NE(uneven.find("scaled unevenly"), std::string::npos) << uneven;
+  Drawing loop;
+  loop.add(0, "INSERT").add(8, "0").add(2, "LOOP").add(10, "1").add(20, "0");
+  const std::string nested = import_error(with_blocks(
+      {{"LOOP", {0, 0}, body(loop)}}, insert("moving", "LOOP", {0, 0}, 1, 1, 0) + frame_text));
+  EXPECT_NE(nested.find("nested deeper than 8"), std::string::npos) << nested;
 }
 
 class DxfImportCli : public testkit::ScratchDirTest {

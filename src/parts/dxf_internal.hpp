@@ -13,6 +13,7 @@ namespace cslice::dxf {
 struct Origin {
   std::string entity;  // LINE, ARC, CIRCLE, LWPOLYLINE, POLYLINE
   int line = 0;        // 1-based line of the DXF file where the entity starts
+  std::string block;   // for an entity of a block: " in block 'B' (the INSERT at line N)"
   std::string describe() const;
 };
 

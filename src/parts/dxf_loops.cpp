@@ -14,7 +14,7 @@
 namespace cslice::dxf {
 
 std::string Origin::describe() const {
-  return "the " + entity + " at line " + std::to_string(line);
+  return "the " + entity + " at line " + std::to_string(line) + block;
 }
 
 namespace {

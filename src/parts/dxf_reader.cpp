@@ -1,7 +1,7 @@
 // ASCII DXF drawings as pair files (docs/dxf-import.md). A DXF file is a list of groups, each
 // two lines: an integer code, then a value. We read the header's unit and the ENTITIES
 // section, and of its entities those on the two chosen layers: LINE, ARC, CIRCLE, LWPOLYLINE
-// and POLYLINE (with its VERTEX entities). Blocks are not expanded.
+// and POLYLINE (with its VERTEX entities), and the entities of the blocks INSERTs place.
 //
 // Read here rather than with dxflib (Debian's libdxflib 3.26.4): that library crashed on a
 // LWPOLYLINE declaring 99999999999 vertices (it sizes an array from the count) and asked for
@@ -11,6 +11,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <span>
@@ -115,21 +116,26 @@ class Reader {
   std::string units;
 
   void read(const std::vector<Group>& groups) {
+    std::vector<EntityWithVertices> entities;
     size_t i = 0;
     while (i < groups.size()) {
-      if (groups[i].code == 0 && groups[i].value == "EOF") return;
+      if (groups[i].code == 0 && groups[i].value == "EOF") break;
       if (groups[i].code == 0 && groups[i].value == "SECTION" && i + 1 < groups.size() &&
           groups[i + 1].code == 2) {
         const std::string_view name = groups[i + 1].value;
         i += 2;
         const size_t end = section_end(groups, i);
-        if (name == "HEADER") read_header({groups.data() + i, end - i});
-        if (name == "ENTITIES") read_entities({groups.data() + i, end - i});
+        const std::span<const Group> section{groups.data() + i, end - i};
+        if (name == "HEADER") read_header(section);
+        if (name == "BLOCKS") read_blocks(section);
+        if (name == "ENTITIES") entities = read_entities(section);
         i = end;
         continue;
       }
       ++i;
     }
+    // After the whole file: an INSERT may come before its block's definition.
+    for (const EntityWithVertices& e : entities) entity(e.entity, &e.vertices);
   }
 
  private:
@@ -151,7 +157,13 @@ class Reader {
       }
   }
 
-  void read_entities(std::span<const Group> groups) {
+  struct EntityWithVertices {
+    Entity entity;
+    std::vector<Entity> vertices;  // a POLYLINE's VERTEX entities
+  };
+
+  static std::vector<EntityWithVertices> read_entities(std::span<const Group> groups) {
+    std::vector<EntityWithVertices> out;
     size_t i = 0;
     while (i < groups.size()) {
       if (groups[i].code != 0) {
@@ -160,29 +172,67 @@ class Reader {
       }
       size_t end = i + 1;
       while (end < groups.size() && groups[end].code != 0) ++end;
-      const Entity e{groups[i].value, groups[i].line, groups.subspan(i + 1, end - i - 1)};
+      EntityWithVertices& e = out.emplace_back();
+      e.entity = {groups[i].value, groups[i].line, groups.subspan(i + 1, end - i - 1)};
       i = end;
-      if (e.type == "POLYLINE") {
-        // Its vertices follow as entities of their own, up to SEQEND.
-        std::vector<Entity> vertices;
-        while (i < groups.size() && groups[i].value != "SEQEND" &&
-               (groups[i].code != 0 || groups[i].value == "VERTEX")) {
-          size_t v_end = i + 1;
-          while (v_end < groups.size() && groups[v_end].code != 0) ++v_end;
-          if (groups[i].code == 0)
-            vertices.push_back(
-                {groups[i].value, groups[i].line, groups.subspan(i + 1, v_end - i - 1)});
-          i = v_end;
-        }
-        entity(e, &vertices);
-      } else {
-        entity(e, nullptr);
+      if (e.entity.type != "POLYLINE") continue;
+      // Its vertices follow as entities of their own, up to SEQEND.
+      while (i < groups.size() && groups[i].value != "SEQEND" &&
+             (groups[i].code != 0 || groups[i].value == "VERTEX")) {
+        size_t v_end = i + 1;
+        while (v_end < groups.size() && groups[v_end].code != 0) ++v_end;
+        if (groups[i].code == 0)
+          e.vertices.push_back(
+              {groups[i].value, groups[i].line, groups.subspan(i + 1, v_end - i - 1)});
+        i = v_end;
       }
+    }
+    return out;
+  }
+
+  // Block definitions: BLOCK (its name, code 2, and base point), its entities, ENDBLK.
+  struct Block {
+    Vec2 base;
+    std::vector<EntityWithVertices> entities;
+  };
+
+  void read_blocks(std::span<const Group> groups) {
+    size_t i = 0;
+    while (i < groups.size()) {
+      if (!(groups[i].code == 0 && groups[i].value == "BLOCK")) {
+        ++i;
+        continue;
+      }
+      size_t end = i + 1;
+      while (end < groups.size() && !(groups[end].code == 0 && groups[end].value == "ENDBLK"))
+        ++end;
+      size_t header_end = i + 1;
+      while (header_end < end && groups[header_end].code != 0) ++header_end;
+      const Entity header{groups[i].value, groups[i].line,
+                          groups.subspan(i + 1, header_end - i - 1)};
+      std::string name;
+      Block block;
+      for (const Group& g : header.groups) {
+        if (g.code == 2) name = upper(g.value);
+        if (g.code == 10) block.base.x = number(g, origin_of("BLOCK", header.line));
+        if (g.code == 20) block.base.y = number(g, origin_of("BLOCK", header.line));
+      }
+      block.entities = read_entities(groups.subspan(header_end, end - header_end));
+      blocks_[name] = std::move(block);
+      i = end;
     }
   }
 
+  static std::string upper(std::string_view s) {
+    std::string out(s);
+    for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return out;
+  }
+
   Layer* layer_of(const Entity& e, std::string& part) {
-    const std::string name(trim(e.layer()));
+    std::string name(trim(e.layer()));
+    // In a block, layer 0 means the layer of the INSERT that places it (DXF's rule).
+    if (name == "0" && !inserts_.empty()) name = inserts_.back().layer;
     layers_seen.insert(name);
     if (same_layer(name, options_.moving_layer)) {
       part = "moving";
@@ -196,11 +246,12 @@ class Reader {
   }
 
   void entity(const Entity& e, const std::vector<Entity>* vertices) {
+    if (e.type == "INSERT") return insert(e);
     std::string part;
     Layer* layer = layer_of(e, part);
     if (!layer) return;
     part_ = part;
-    const Origin origin{std::string(e.type), e.line};
+    const Origin origin = origin_of(e.type, e.line);
     if (e.type == "LINE")
       line(e, origin, *layer);
     else if (e.type == "ARC")
@@ -214,12 +265,11 @@ class Reader {
     else if (e.type == "SPLINE" || e.type == "ELLIPSE")
       fail(origin.describe() + ": a " + std::string(e.type) +
            " is not a line or circular arc; approximate it by arcs and lines");
-    else if (e.type == "INSERT")
-      fail(origin.describe() + ": block references are not expanded; explode the block");
     // Anything else (text, dimensions, hatches, points) annotates the drawing: not outline.
   }
 
   [[noreturn]] void fail(const std::string& reason) const {
+    if (part_.empty()) throw DxfError{"", reason};
     throw DxfError{part_, "layer '" + current_layer() + "': " + reason};
   }
   std::string current_layer() const {
@@ -273,13 +323,104 @@ class Reader {
   // (DXF's arbitrary axis rule), so arcs turn the other way. Ends must be numbers: an arc's
   // start angle of 1e308 degrees has no cosine.
   Piece flip(Piece p, bool mirror) const {
+    if (mirror) {
+      p.from.x = -p.from.x;
+      p.to.x = -p.to.x;
+      p.bulge = -p.bulge;
+    }
+    if (!inserts_.empty()) {
+      check_inserts(p.origin);
+      p.from = placed(p.from);
+      p.to = placed(p.to);
+      if (inserts_mirror()) p.bulge = -p.bulge;
+    }
     if (!(finite(p.from) && finite(p.to) && std::isfinite(p.bulge)))
       fail(p.origin.describe() + ": its ends are beyond the range of numbers");
-    if (!mirror) return p;
-    p.from.x = -p.from.x;
-    p.to.x = -p.to.x;
-    p.bulge = -p.bulge;
     return p;
+  }
+
+  // Where an entity is, for messages: in a block, with the INSERT placing it.
+  Origin origin_of(std::string_view type, int line) const {
+    return {std::string(type), line, inserts_.empty() ? "" : inserts_.back().context};
+  }
+
+  // ---- Blocks placed by INSERT ---------------------------------------------------------
+  // An INSERT draws its block's entities moved from the block's base point, scaled, turned
+  // and moved to the insertion point (and mirrored when its extrusion is along -z). Blocks
+  // may insert blocks, up to kMaxBlockDepth deep.
+  struct Insert {
+    std::string layer;    // the INSERT's layer, which the block's layer-0 entities take
+    std::string context;  // " in block 'B' (the INSERT at line N)", for messages
+    Vec2 base, at;
+    double sx = 1.0, sy = 1.0, c = 1.0, s = 0.0;
+    bool ocs_mirror = false;
+    bool refused = false;  // scaled unevenly (arcs would be ellipses) or arrayed
+  };
+  static constexpr size_t kMaxBlockDepth = 8;
+  // Entities drawn through blocks, at most: a block inserting another ten times, eight deep,
+  // would otherwise draw 10^8.
+  static constexpr long long kMaxBlockEntities = 1000000;
+
+  void insert(const Entity& e) {
+    part_.clear();  // an INSERT belongs to no part; its errors name none
+    const Origin o = origin_of("INSERT", e.line);
+    std::string name;
+    for (const Group& g : e.groups)
+      if (g.code == 2) name = upper(g.value);
+    const auto it = blocks_.find(name);
+    if (it == blocks_.end()) return;  // an undefined block draws nothing readable
+    if (inserts_.size() >= kMaxBlockDepth)
+      fail(o.describe() + ": blocks nested deeper than " + std::to_string(kMaxBlockDepth) +
+           " (does a block insert itself?)");
+    Insert in;
+    in.layer = std::string(trim(e.layer()));
+    if (in.layer == "0" && !inserts_.empty()) in.layer = inserts_.back().layer;
+    in.context = " in block '" + name + "' (" + o.describe() + ")";
+    in.base = it->second.base;
+    in.at = {value(e, 10, o, 0.0), value(e, 20, o, 0.0)};
+    in.sx = value(e, 41, o, 1.0);
+    in.sy = value(e, 42, o, 1.0);
+    const double turn = value(e, 50, o, 0.0) * kPi / 180.0;
+    in.c = std::cos(turn);
+    in.s = std::sin(turn);
+    in.ocs_mirror = mirrored(e, o);
+    in.refused = in.sx == 0.0 ||
+                 std::fabs(std::fabs(in.sx) - std::fabs(in.sy)) > 1e-12 * std::fabs(in.sx) ||
+                 value(e, 70, o, 1.0) > 1.0 || value(e, 71, o, 1.0) > 1.0;
+    inserts_.push_back(std::move(in));
+    for (const EntityWithVertices& b : it->second.entities) {
+      if (++block_entities_ > kMaxBlockEntities)
+        fail(o.describe() + ": its blocks draw more than " + std::to_string(kMaxBlockEntities) +
+             " entities");
+      entity(b.entity, &b.vertices);
+    }
+    inserts_.pop_back();
+  }
+
+  void check_inserts(const Origin& o) const {
+    for (const Insert& in : inserts_)
+      if (in.refused)
+        fail(o.describe() + ": its block is scaled unevenly or arrayed; explode the block");
+  }
+
+  // A block's point in the drawing, through every INSERT placing it (the innermost first).
+  Vec2 placed(Vec2 p) const {
+    for (auto in = inserts_.rbegin(); in != inserts_.rend(); ++in) {
+      const Vec2 q{(p.x - in->base.x) * in->sx, (p.y - in->base.y) * in->sy};
+      p = {in->c * q.x - in->s * q.y + in->at.x, in->s * q.x + in->c * q.y + in->at.y};
+      if (in->ocs_mirror) p.x = -p.x;
+    }
+    return p;
+  }
+  bool inserts_mirror() const {
+    bool mirror = false;
+    for (const Insert& in : inserts_) mirror ^= (in.sx * in.sy < 0.0) != in.ocs_mirror;
+    return mirror;
+  }
+  double inserts_scale() const {
+    double scale = 1.0;
+    for (const Insert& in : inserts_) scale *= std::fabs(in.sx);
+    return scale;
   }
 
   static bool finite(Vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
@@ -314,6 +455,13 @@ class Reader {
     if (!(loop.radius > 0.0))
       fail(o.describe() + ": radius " + detail::format_number(loop.radius) + " is not positive");
     if (mirrored(e, o)) loop.center.x = -loop.center.x;
+    if (!inserts_.empty()) {
+      check_inserts(o);
+      loop.center = placed(loop.center);
+      loop.radius *= inserts_scale();
+    }
+    if (!(finite(loop.center) && std::isfinite(loop.radius)))
+      fail(o.describe() + ": its centre or radius is beyond the range of numbers");
     loop.origin = o;
     layer.loops.push_back(loop);
   }
@@ -341,7 +489,7 @@ class Reader {
       fail(o.describe() + ": a 3D polyline or mesh, not a planar outline");
     std::vector<Vertex> vertices;
     for (const Entity& v : vertex_entities) {
-      const Origin vo{"VERTEX", v.line};
+      const Origin vo = origin_of("VERTEX", v.line);
       if (flags(v, vo) & 16) continue;  // a spline's control point
       vertices.push_back({{required(v, 10, vo), required(v, 20, vo)}, value(v, 42, vo, 0.0)});
     }
@@ -370,6 +518,9 @@ class Reader {
  private:
   const DxfImportOptions& options_;
   std::string part_;
+  std::map<std::string, Block> blocks_;  // by upper-case name
+  std::vector<Insert> inserts_;          // the INSERTs placing the entities being read
+  long long block_entities_ = 0;
 };
 
 Box layer_box(const Layer& layer) {
