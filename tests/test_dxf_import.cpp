@@ -138,12 +138,15 @@ Drawing& with_block(Drawing& d) {
 TEST(DxfImport, PolylineWithBulgesIsTheLoopItDraws) {
   Drawing d;
   d.lwpolyline("moving", {{-1, -1}, {1, -1}, {1, 1, 1.0}, {-1, 1}});
-  const Pair pair = import_ok(with_block(d).text());
+  const std::string text = with_block(d).text();
+  const Pair pair = import_ok(text);
   EXPECT_EQ(pair.moving.segment_count(), 3);
   EXPECT_EQ(pair.moving.arc_count(), 1);
   EXPECT_NEAR(pair.moving.area, 4 + kPi / 2, 1e-12);
   EXPECT_NEAR(pair.fixed.area, 8, 1e-12);
   EXPECT_EQ(pair.units, "mm");
+  // Saved by an editor that starts UTF-8 text with a byte order mark: the same drawing.
+  EXPECT_NEAR(import_ok("\xEF\xBB\xBF" + text).moving.area, 4 + kPi / 2, 1e-12);
 }
 
 // The same outline as loose lines and an arc, in any order and direction, is the same loop.

@@ -56,6 +56,7 @@ std::string quoted(std::string_view s) {
 
 // The groups of the text: a code line (an integer), then its value line.
 std::vector<Group> read_groups(std::string_view text) {
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte order mark
   if (text.substr(0, 18) == "AutoCAD Binary DXF")
     throw DxfError{"", "a binary DXF file; save the drawing as ASCII DXF"};
   std::vector<std::string_view> lines;
