@@ -125,6 +125,18 @@ std::string import_error(const std::string& text, DxfImportOptions options = {})
   return r.ok() ? "" : r.error->message();
 }
 
+// The entities of a Drawing, without its sections.
+std::string body(Drawing& d) {
+  const std::string text = d.text();
+  const size_t from = text.find("ENTITIES\n") + 9, to = text.rfind("  0\nENDSEC");
+  return text.substr(from, to - from);
+}
+
+// A number as text that reads back as the same double.
+std::string exact(double v) {
+  return nlohmann::json(v).dump();
+}
+
 // A 4 x 2 block for the fixed part, the same in every test that needs one.
 Drawing& with_block(Drawing& d) {
   return d.lwpolyline("fixed", {{10, 0}, {14, 0}, {14, 2}, {10, 2}});
@@ -188,6 +200,55 @@ TEST(DxfImport, MirroredArcLiesWhereItIsDrawn) {
   EXPECT_NEAR(b.moving.area, kPi / 2, 1e-12);
   EXPECT_NEAR(b.moving.box.hi.x, 2.0, 1e-12);
   EXPECT_NEAR(b.moving.box.lo.x, 1.0, 1e-12);
+}
+
+// Curves that are not lines or arcs become arcs within a hundredth of the tolerance: an
+// ellipse; a circle drawn as a rational quadratic spline (its arcs exact); a cubic Bezier
+// closed by a line, against its area from Bernstein polynomials.
+TEST(DxfImport, SplinesAndEllipsesBecomeArcs) {
+  Drawing frame;
+  frame.lwpolyline("fixed", {{-20, -20}, {20, -20}, {20, 20}, {-20, 20}});
+  const std::string frame_text = body(frame);
+  const std::string head = "  0\nSECTION\n  2\nENTITIES\n", tail = "  0\nENDSEC\n  0\nEOF\n";
+  // An ellipse of semi-axes 2 and 1, its major axis along (1, 1).
+  Drawing ellipse;
+  ellipse.entity("ELLIPSE", "moving").add(10, "0").add(20, "0").add(11, exact(std::sqrt(2.0)));
+  ellipse.add(21, exact(std::sqrt(2.0))).add(40, "0.5");
+  Pair pair = import_ok(head + body(ellipse) + frame_text + tail);
+  EXPECT_NEAR(pair.moving.area, 2 * kPi, 1e-3);
+  EXPECT_NEAR(pair.moving.box.hi.x, std::sqrt(2.5),
+              1e-4);  // max of 2 cos t / sqrt 2 - sin t / sqrt 2
+  EXPECT_LT(pair.moving.arc_count(), 200);
+  // The unit circle as a rational quadratic NURBS of 9 control points.
+  Drawing circle;
+  circle.entity("SPLINE", "moving").add(70, "1").add(71, "2");
+  for (double k : {0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0})
+    circle.add(40, exact(k));
+  const double h = std::sqrt(0.5);
+  for (double w : {1.0, h, 1.0, h, 1.0, h, 1.0, h, 1.0}) circle.add(41, exact(w));
+  for (const V& p :
+       std::vector<V>{{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}, {1, 0}})
+    circle.add(10, exact(p.x)).add(20, exact(p.y));
+  pair = import_ok(head + body(circle) + frame_text + tail);
+  EXPECT_NEAR(pair.moving.area, kPi, 1e-9);
+  EXPECT_EQ(pair.moving.arc_count(), 16);  // four pieces per knot span, each exact
+  // A cubic Bezier from (0, 0) round to (4, 0), closed by the line back.
+  const V c[4] = {{0, 0}, {0, 4}, {4, 4}, {4, 0}};
+  Drawing bezier;
+  bezier.entity("SPLINE", "moving").add(71, "3");
+  for (double k : {0, 0, 0, 0, 1, 1, 1, 1}) bezier.add(40, exact(k));
+  for (const V& p : c) bezier.add(10, exact(p.x)).add(20, exact(p.y));
+  bezier.line("moving", {4, 0}, {0, 0});
+  pair = import_ok(head + body(bezier) + frame_text + tail);
+  testkit::LoopVertices samples;
+  for (int i = 0; i <= 20000; ++i) {
+    const double t = i / 20000.0, s = 1 - t;
+    const double b[4] = {s * s * s, 3 * s * s * t, 3 * s * t * t, t * t * t};
+    samples.push_back({b[0] * c[0].x + b[1] * c[1].x + b[2] * c[2].x + b[3] * c[3].x,
+                       b[0] * c[0].y + b[1] * c[1].y + b[2] * c[2].y + b[3] * c[3].y, 0.0});
+  }
+  EXPECT_NEAR(pair.moving.area, std::fabs(testkit::loop_area(samples)), 1e-4);
+  EXPECT_NEAR(pair.moving.box.hi.y, 3.0, 1e-4);  // the curve's top, at t = 1/2
 }
 
 // Old-style POLYLINE with VERTEX entities, and a CIRCLE.
@@ -288,8 +349,9 @@ TEST(DxfImport, ErrorsNameTheLayerTheEntityAndItsLine) {
   huge_flags.add(10, "1").add(20, "0").add(10, "0").add(20, "1");
   expect_has(import_error(with_block(huge_flags).text()), {"flags (group code 70) 1e+300"});
   Drawing spline;
-  spline.lwpolyline("moving", {{0, 0}, {1, 0}, {0, 1}}).entity("SPLINE", "moving");
-  expect_has(import_error(with_block(spline).text()), {"SPLINE", "approximate it by arcs"});
+  spline.entity("SPLINE", "moving").add(71, "3").add(40, "0").add(40, "1");
+  spline.add(10, "0").add(20, "0").add(10, "1").add(20, "0");
+  expect_has(import_error(with_block(spline).text()), {"SPLINE at line", "too few for degree 3"});
   Drawing tilted;
   tilted.lwpolyline("moving", {{0, 0}, {1, 0}, {0, 1}}).add(210, "0.6").add(230, "0.8");
   expect_has(import_error(with_block(tilted).text()), {"out of the XY plane"});
@@ -340,13 +402,6 @@ std::string with_blocks(const std::vector<std::tuple<std::string, V, std::string
     text += "  0\nBLOCK\n  8\n0\n  2\n" + name + "\n 10\n" + std::to_string(base.x) + "\n 20\n" +
             std::to_string(base.y) + "\n" + body + "  0\nENDBLK\n";
   return text + "  0\nENDSEC\n  0\nSECTION\n  2\nENTITIES\n" + entities + "  0\nENDSEC\n  0\nEOF\n";
-}
-
-// The entities of a Drawing, without its sections.
-std::string body(Drawing& d) {
-  const std::string text = d.text();
-  const size_t from = text.find("ENTITIES\n") + 9, to = text.rfind("  0\nENDSEC");
-  return text.substr(from, to - from);
 }
 
 std::string insert(const std::string& layer, const std::string& block, V at, double scale_x,

@@ -1,7 +1,7 @@
 // CAD drawings in and out (docs/dxf-import.md). In: the outlines on two layers of an ASCII DXF
-// file become the moving and the fixed part; lines, arcs, circles, polylines (with bulges)
-// and inserted blocks are read, and lines, arcs and open polylines are joined end to end into
-// closed loops. Out: a
+// file become the moving and the fixed part; lines, arcs, circles, polylines (with bulges),
+// splines and ellipses (as arcs) and inserted blocks are read, and the pieces are joined end
+// to end into closed loops. Out: a
 // slice's free-space boundary as exact lines and arcs.
 #pragma once
 

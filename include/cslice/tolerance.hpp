@@ -111,6 +111,12 @@ inline constexpr double kPlacementCoarseningWarning = 10.0;
 // 5e-7 of a drawing unit, which is 5e-9 of a 100 mm part. A thousandth of the default contact
 // tolerance covers both, and ends that far apart were never meant to be one point.
 inline constexpr double kDxfJoinRelative = 1e-6;
+// A DXF SPLINE or ELLIPSE becomes circular arcs that stay within this fraction of the pair's
+// tolerance of it (dimensionless; src/parts/dxf_curves.cpp): the approximation moves contact
+// by a hundredth of what the user allows, and arcs follow a smooth curve closely with few
+// pieces (the error of an arc through three points of a curve falls as the cube of its
+// length). Without a tolerance given, the default one is taken on the curve's own box.
+inline constexpr double kDxfCurveFitPerTolerance = 0.01;
 // A path step is certified when its sweep stays below the clearances at its ends less twice
 // the contact tolerance (docs/path.md, The certificate). Those clearances and the sweep are
 // rounded relative to the magnitudes in play (the pair's size, the sweep, the clearances, the

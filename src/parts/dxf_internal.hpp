@@ -2,6 +2,7 @@
 // outline pieces of one layer, each knowing the entity it came from.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,34 @@ struct OutLoop {
   double radius = 0.0;
   std::string origin;
 };
+
+// ---- Curves approximated by arcs (dxf_curves.cpp) ---------------------------------------
+
+// A vertex of an approximating chain: the point and the bulge of the edge it starts.
+struct ArcVertex {
+  Vec2 p;
+  double bulge = 0.0;
+};
+
+// Arcs (and segments) within `tolerance` of curve(u) for u from breaks.front() to
+// breaks.back(), each interval between breaks fitted on its own (at least four pieces each):
+// the chain's vertices into `out` and its last point into `end`. False when more than
+// `max_pieces` would be needed.
+bool arcs_along(const std::function<Vec2(double)>& curve, const std::vector<double>& breaks,
+                double tolerance, size_t max_pieces, std::vector<ArcVertex>& out, Vec2& end);
+
+// A NURBS curve as a DXF SPLINE gives it: degree, knots, control points, weights (empty:
+// all 1).
+struct Nurbs {
+  int degree = 3;
+  std::vector<double> knots;
+  std::vector<Vec2> points;
+  std::vector<double> weights;
+};
+// Why the curve is not well formed, or empty.
+std::string check_nurbs(const Nurbs& n);
+// The point at u, clamped to the curve's domain [knots[degree], knots[points]].
+Vec2 nurbs_point(const Nurbs& n, double u);
 
 // Joins a layer's pieces end to end (ends within `join` meet, each with exactly one other)
 // and adds its closed loops. Returns an empty string, or why it cannot (an open end, ends

@@ -1,7 +1,8 @@
 // ASCII DXF drawings as pair files (docs/dxf-import.md). A DXF file is a list of groups, each
 // two lines: an integer code, then a value. We read the header's unit and the ENTITIES
 // section, and of its entities those on the two chosen layers: LINE, ARC, CIRCLE, LWPOLYLINE
-// and POLYLINE (with its VERTEX entities), and the entities of the blocks INSERTs place.
+// and POLYLINE (with its VERTEX entities), SPLINE and ELLIPSE (as arcs within a hundredth of the
+// tolerance), and the entities of the blocks INSERTs place.
 //
 // Read here rather than with dxflib (Debian's libdxflib 3.26.4): that library crashed on a
 // LWPOLYLINE declaring 99999999999 vertices (it sizes an array from the count) and asked for
@@ -11,6 +12,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -263,9 +265,10 @@ class Reader {
       lwpolyline(e, origin, *layer);
     else if (e.type == "POLYLINE")
       polyline(e, *vertices, origin, *layer);
-    else if (e.type == "SPLINE" || e.type == "ELLIPSE")
-      fail(origin.describe() + ": a " + std::string(e.type) +
-           " is not a line or circular arc; approximate it by arcs and lines");
+    else if (e.type == "SPLINE")
+      spline(e, origin, *layer);
+    else if (e.type == "ELLIPSE")
+      ellipse(e, origin, *layer);
     // Anything else (text, dimensions, hatches, points) annotates the drawing: not outline.
   }
 
@@ -465,6 +468,75 @@ class Reader {
       fail(o.describe() + ": its centre or radius is beyond the range of numbers");
     loop.origin = o;
     layer.loops.push_back(loop);
+  }
+
+  // ---- Curves other than lines and arcs -----------------------------------------------
+  static constexpr size_t kMaxCurvePieces = 100000;
+
+  // A hundredth of the pair's tolerance, the default one taken on the curve's own box.
+  double fit_tolerance(const Box& box) const {
+    const double tolerance =
+        options_.tolerance.value_or(kDefaultRelativeTolerance * length(box.hi - box.lo));
+    return kDxfCurveFitPerTolerance * tolerance;
+  }
+
+  // The arcs along curve(u), u through `breaks`, as the layer's pieces to join.
+  void add_curve(const std::function<Vec2(double)>& curve, const std::vector<double>& breaks,
+                 double tolerance, bool mirror, const Origin& o, Layer& layer) {
+    std::vector<dxf::ArcVertex> chain;
+    Vec2 end;
+    if (!(tolerance > 0.0 && std::isfinite(tolerance)) ||
+        !dxf::arcs_along(curve, breaks, tolerance, kMaxCurvePieces, chain, end))
+      fail(o.describe() + ": more than " + std::to_string(kMaxCurvePieces) +
+           " arcs would be needed to follow it within " + detail::format_number(tolerance));
+    for (size_t i = 0; i < chain.size(); ++i) {
+      const Vec2 to = i + 1 < chain.size() ? chain[i + 1].p : end;
+      if (chain[i].p == to) continue;  // a cusp's repeated point: nothing to draw
+      layer.pieces.push_back(flip({chain[i].p, to, chain[i].bulge, o}, mirror));
+    }
+  }
+
+  void spline(const Entity& e, const Origin& o, Layer& layer) {
+    dxf::Nurbs n;
+    const double degree = value(e, 71, o, 3.0);
+    if (!(degree >= 1.0 && degree <= 10.0 && degree == std::floor(degree)))
+      fail(o.describe() + ": degree " + detail::format_number(degree) + " is not 1 to 10");
+    n.degree = static_cast<int>(degree);
+    for (const Group& g : e.groups) {
+      if (g.code == 40) n.knots.push_back(number(g, o));
+      if (g.code == 41) n.weights.push_back(number(g, o));
+      if (g.code == 10) n.points.push_back({number(g, o), 0.0});
+      if (g.code == 20 && !n.points.empty()) n.points.back().y = number(g, o);
+    }
+    if (const std::string problem = dxf::check_nurbs(n); !problem.empty())
+      fail(o.describe() + ": " + problem);
+    std::vector<double> breaks;  // the distinct knots of its domain
+    for (size_t k = static_cast<size_t>(n.degree); k <= n.points.size(); ++k)
+      if (breaks.empty() || n.knots[k] > breaks.back()) breaks.push_back(n.knots[k]);
+    Box box;
+    for (Vec2 p : n.points) box.add(p);
+    add_curve([&](double u) { return dxf::nurbs_point(n, u); }, breaks, fit_tolerance(box),
+              mirrored(e, o), o, layer);
+  }
+
+  void ellipse(const Entity& e, const Origin& o, Layer& layer) {
+    const Vec2 c{required(e, 10, o), required(e, 20, o)};
+    const Vec2 major{required(e, 11, o), required(e, 21, o)};
+    const double ratio = required(e, 40, o);
+    if (!(length(major) > 0.0) || !(ratio > 0.0 && ratio <= 1.0))
+      fail(o.describe() + ": its major axis must have a length and its ratio lie in (0, 1]");
+    const double t0 = value(e, 41, o, 0.0), t1 = value(e, 42, o, kTwoPi);
+    double sweep = std::fmod(t1 - t0, kTwoPi);
+    if (!(sweep > 0.0)) sweep += kTwoPi;
+    const Vec2 minor{-major.y * ratio, major.x * ratio};
+    std::vector<double> breaks;
+    for (int k = 0; k <= 4; ++k) breaks.push_back(t0 + sweep * k / 4.0);
+    const double r = length(major);
+    Box box;
+    box.add(c - Vec2{r, r});
+    box.add(c + Vec2{r, r});
+    add_curve([&](double t) { return c + major * std::cos(t) + minor * std::sin(t); }, breaks,
+              fit_tolerance(box), mirrored(e, o), o, layer);
   }
 
   struct Vertex {
