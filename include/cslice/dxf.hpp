@@ -26,19 +26,8 @@ struct DxfImportOptions {
   std::string name;                      // the pair's name (default: the source's)
 };
 
-struct DxfImportResult {
-  std::optional<std::string> pair_json;  // a pair file's text, as docs/pair-format.md
-  std::optional<InputError> error;       // names the source, part, layer, entity and line
-  bool ok() const { return pair_json.has_value(); }
-};
-
-// Reads the drawing's text (`source` names it in errors) into a pair file's text. The text is
-// not yet checked as a pair: parse_pair does that (import_dxf_pair does both).
-DxfImportResult import_dxf(std::string_view dxf_text, std::string_view source,
-                           const DxfImportOptions& options);
-
-// import_dxf, then parse_pair on its text; an error of the pair's loops names the DXF entity
-// each loop came from.
+// The drawing's text (`source` names it in errors) as a pair file's text, checked as
+// parse_pair reads it: an error of the pair's loops names the DXF entities the loop came from.
 struct DxfPairResult {
   std::optional<Pair> pair;
   std::string pair_json;

@@ -58,9 +58,9 @@ void register_import(CLI::App& app) {
   auto opts = std::make_shared<ImportOptions>();
   CLI::App* cmd = app.add_subcommand(
       "import",
-      "Make a pair file from two layers of an ASCII DXF drawing: lines, arcs, circles and "
-      "polylines (with bulges); loose lines and arcs are joined end to end into loops "
-      "(docs/dxf-import.md)");
+      "Make a pair file from two layers of an ASCII DXF drawing: lines, arcs, circles, "
+      "polylines (with bulges), splines and ellipses (as arcs) and inserted blocks; loose "
+      "pieces are joined end to end into loops (docs/dxf-import.md)");
   cmd->add_option("drawing", opts->path, "DXF file (ASCII)")->required();
   cmd->add_option("-o,--output", opts->output, "Pair file to write (default: standard output)");
   cmd->add_option("--moving", opts->moving_layer, "Layer of the moving part (default: moving)");

@@ -1,6 +1,7 @@
 // Curves of a DXF drawing that are not lines or circular arcs (SPLINE, ELLIPSE), as circular
 // arcs within a tolerance: the parts cslice works with are bounded by segments and arcs.
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "parts/dxf_internal.hpp"
@@ -99,7 +100,7 @@ Vec2 nurbs_point(const Nurbs& n, double u) {
   struct H {
     double x, y, w;
   };
-  std::vector<H> d(static_cast<size_t>(p) + 1);
+  std::array<H, 11> d;  // degree <= 10 (check_nurbs): no allocation per point
   for (int j = 0; j <= p; ++j) {
     const size_t i = k - p + j;
     const double w = n.weights.empty() ? 1.0 : n.weights[i];

@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cslice/geometry.hpp"
@@ -25,30 +26,25 @@ struct Piece {
   Origin origin;
 };
 
-// A loop already closed in the drawing: a closed polyline, or a circle.
-struct ClosedLoop {
+// A closed loop: one drawn closed (a closed polyline, a circle), or joined from pieces. As the
+// pair file writes it: vertices with the bulge of the edge each starts, or a circle.
+struct DrawnLoop {
   std::vector<Piece> edges;  // empty for a circle
   bool circle = false;
   Vec2 center;
   double radius = 0.0;
-  Origin origin;
+  std::string origin;  // the entities it was made of, described
 };
 
 struct Layer {
-  std::vector<ClosedLoop> loops;
-  std::vector<Piece> pieces;  // lines, arcs and open polylines' edges, to be joined
+  std::vector<DrawnLoop> loops;  // drawn closed
+  std::vector<Piece> pieces;     // lines, arcs and open polylines' edges, to be joined
   bool empty() const { return loops.empty() && pieces.empty(); }
 };
 
-// A loop as the pair file writes it: vertices with the bulge of the edge each starts, or a
-// circle; `origin` names the entities it was made of.
-struct OutLoop {
-  std::vector<Piece> edges;
-  bool circle = false;
-  Vec2 center;
-  double radius = 0.0;
-  std::string origin;
-};
+// The $INSUNITS codes of the units a pair file may name (others are unitless to cslice).
+inline constexpr std::pair<int, const char*> kInsunits[] = {{1, "in"}, {2, "ft"}, {4, "mm"},
+                                                            {5, "cm"}, {6, "m"},  {13, "um"}};
 
 // ---- Curves approximated by arcs (dxf_curves.cpp) ---------------------------------------
 
@@ -78,9 +74,9 @@ std::string check_nurbs(const Nurbs& n);
 // The point at u, clamped to the curve's domain [knots[degree], knots[points]].
 Vec2 nurbs_point(const Nurbs& n, double u);
 
-// Joins a layer's pieces end to end (ends within `join` meet, each with exactly one other)
-// and adds its closed loops. Returns an empty string, or why it cannot (an open end, ends
+// The layer's loops drawn closed, then its pieces joined end to end (ends within `join` meet,
+// each with exactly one other). Returns an empty string, or why it cannot (an open end, ends
 // meeting three or more at a point).
-std::string build_loops(const Layer& layer, double join, std::vector<OutLoop>& out);
+std::string build_loops(const Layer& layer, double join, std::vector<DrawnLoop>& out);
 
 }  // namespace cslice::dxf

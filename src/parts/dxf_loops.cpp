@@ -104,22 +104,15 @@ std::string describe_all(const std::vector<Origin>& origins) {
 
 }  // namespace
 
-std::string build_loops(const Layer& layer, double join, std::vector<OutLoop>& out) {
-  for (const ClosedLoop& c : layer.loops) {
-    OutLoop& loop = out.emplace_back();
-    loop.edges = c.edges;
-    loop.circle = c.circle;
-    loop.center = c.center;
-    loop.radius = c.radius;
-    loop.origin = c.origin.describe();
-  }
+std::string build_loops(const Layer& layer, double join, std::vector<DrawnLoop>& out) {
+  out.insert(out.end(), layer.loops.begin(), layer.loops.end());
   std::vector<int> partner;
   if (std::string problem = match_ends(layer.pieces, join, partner); !problem.empty())
     return problem;
   std::vector<char> used(layer.pieces.size(), 0);
   for (size_t first = 0; first < layer.pieces.size(); ++first) {
     if (used[first]) continue;
-    OutLoop& loop = out.emplace_back();
+    DrawnLoop& loop = out.emplace_back();
     std::vector<Origin> origins;
     int piece = static_cast<int>(first);
     bool reversed = false;

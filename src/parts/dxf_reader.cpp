@@ -28,10 +28,9 @@ namespace cslice {
 
 namespace {
 
-using dxf::ClosedLoop;
+using dxf::DrawnLoop;
 using dxf::Layer;
 using dxf::Origin;
-using dxf::OutLoop;
 using dxf::Piece;
 
 struct Group {
@@ -40,7 +39,7 @@ struct Group {
   int line = 0;  // 1-based line of the code
 };
 
-// Thrown while reading; import_dxf turns it into an InputError.
+// Thrown while reading; import_dxf_pair turns it into an InputError.
 struct DxfError {
   std::string part, reason;
 };
@@ -153,9 +152,7 @@ class Reader {
         int code = 0;
         const std::string_view v = groups[i + 1].value;
         std::from_chars(v.data(), v.data() + v.size(), code);
-        static const std::pair<int, const char*> kUnits[] = {{1, "in"}, {2, "ft"}, {4, "mm"},
-                                                             {5, "cm"}, {6, "m"},  {13, "um"}};
-        for (const auto& [c, name] : kUnits)
+        for (const auto& [c, name] : dxf::kInsunits)
           if (c == code) units = name;
       }
   }
@@ -232,10 +229,15 @@ class Reader {
     return out;
   }
 
-  Layer* layer_of(const Entity& e, std::string& part) {
+  // The entity's layer. In a block, layer 0 means the layer of the INSERT that places it
+  // (DXF's rule).
+  std::string layer_name(const Entity& e) const {
     std::string name(trim(e.layer()));
-    // In a block, layer 0 means the layer of the INSERT that places it (DXF's rule).
-    if (name == "0" && !inserts_.empty()) name = inserts_.back().layer;
+    return name == "0" && !inserts_.empty() ? inserts_.back().layer : name;
+  }
+
+  Layer* layer_of(const Entity& e, std::string& part) {
+    const std::string name = layer_name(e);
     layers_seen.insert(name);
     if (same_layer(name, options_.moving_layer)) {
       part = "moving";
@@ -323,21 +325,21 @@ class Reader {
     return z < 0.0;
   }
 
-  // Object coordinates to the drawing's: with the extrusion along -z the x axis is reversed
-  // (DXF's arbitrary axis rule), so arcs turn the other way. Ends must be numbers: an arc's
-  // start angle of 1e308 degrees has no cosine.
-  Piece flip(Piece p, bool mirror) const {
-    if (mirror) {
-      p.from.x = -p.from.x;
-      p.to.x = -p.to.x;
-      p.bulge = -p.bulge;
-    }
-    if (!inserts_.empty()) {
-      check_inserts(p.origin);
-      p.from = placed(p.from);
-      p.to = placed(p.to);
-      if (inserts_mirror()) p.bulge = -p.bulge;
-    }
+  // An entity's point in the drawing: from its object coordinates (with the extrusion along -z
+  // the x axis is reversed, DXF's arbitrary axis rule), through the INSERTs placing it.
+  Vec2 drawing_point(Vec2 p, bool mirror) const {
+    if (mirror) p.x = -p.x;
+    return placed(p);
+  }
+
+  // A piece in the drawing's coordinates; a mirror, of the entity or of an INSERT, turns its
+  // arc the other way. Ends must be numbers: an arc's start angle of 1e308 degrees has no
+  // cosine.
+  Piece in_drawing(Piece p, bool mirror) const {
+    check_inserts(p.origin);
+    p.from = drawing_point(p.from, mirror);
+    p.to = drawing_point(p.to, mirror);
+    if (mirror != inserts_mirror()) p.bulge = -p.bulge;
     if (!(finite(p.from) && finite(p.to) && std::isfinite(p.bulge)))
       fail(p.origin.describe() + ": its ends are beyond the range of numbers");
     return p;
@@ -377,8 +379,7 @@ class Reader {
       fail(o.describe() + ": blocks nested deeper than " + std::to_string(kMaxBlockDepth) +
            " (does a block insert itself?)");
     Insert in;
-    in.layer = std::string(trim(e.layer()));
-    if (in.layer == "0" && !inserts_.empty()) in.layer = inserts_.back().layer;
+    in.layer = layer_name(e);
     in.context = " in block '" + name + "' (" + o.describe() + ")";
     in.base = it->second.base;
     in.at = {value(e, 10, o, 0.0), value(e, 20, o, 0.0)};
@@ -432,7 +433,7 @@ class Reader {
   void line(const Entity& e, const Origin& o, Layer& layer) {
     Piece p{
         {required(e, 10, o), required(e, 20, o)}, {required(e, 11, o), required(e, 21, o)}, 0.0, o};
-    layer.pieces.push_back(flip(p, mirrored(e, o)));
+    layer.pieces.push_back(in_drawing(p, mirrored(e, o)));
   }
 
   void arc(const Entity& e, const Origin& o, Layer& layer) {
@@ -448,25 +449,22 @@ class Reader {
     const double a0 = start * kPi / 180.0, a1 = end * kPi / 180.0;
     Piece p{c + Vec2{r * std::cos(a0), r * std::sin(a0)},
             c + Vec2{r * std::cos(a1), r * std::sin(a1)}, std::tan(sweep * kPi / 180.0 / 4.0), o};
-    layer.pieces.push_back(flip(p, mirrored(e, o)));
+    layer.pieces.push_back(in_drawing(p, mirrored(e, o)));
   }
 
   void circle(const Entity& e, const Origin& o, Layer& layer) {
-    ClosedLoop loop;
+    DrawnLoop loop;
     loop.circle = true;
-    loop.center = {required(e, 10, o), required(e, 20, o)};
-    loop.radius = required(e, 40, o);
-    if (!(loop.radius > 0.0))
-      fail(o.describe() + ": radius " + detail::format_number(loop.radius) + " is not positive");
-    if (mirrored(e, o)) loop.center.x = -loop.center.x;
-    if (!inserts_.empty()) {
-      check_inserts(o);
-      loop.center = placed(loop.center);
-      loop.radius *= inserts_scale();
-    }
+    const Vec2 center{required(e, 10, o), required(e, 20, o)};
+    const double radius = required(e, 40, o);
+    if (!(radius > 0.0))
+      fail(o.describe() + ": radius " + detail::format_number(radius) + " is not positive");
+    check_inserts(o);
+    loop.center = drawing_point(center, mirrored(e, o));
+    loop.radius = radius * inserts_scale();
     if (!(finite(loop.center) && std::isfinite(loop.radius)))
       fail(o.describe() + ": its centre or radius is beyond the range of numbers");
-    loop.origin = o;
+    loop.origin = o.describe();
     layer.loops.push_back(loop);
   }
 
@@ -476,7 +474,7 @@ class Reader {
   // A hundredth of the pair's tolerance, the default one taken on the curve's own box.
   double fit_tolerance(const Box& box) const {
     const double tolerance =
-        options_.tolerance.value_or(kDefaultRelativeTolerance * length(box.hi - box.lo));
+        options_.tolerance.value_or(kDefaultRelativeTolerance * box.diagonal());
     return kDxfCurveFitPerTolerance * tolerance;
   }
 
@@ -492,7 +490,7 @@ class Reader {
     for (size_t i = 0; i < chain.size(); ++i) {
       const Vec2 to = i + 1 < chain.size() ? chain[i + 1].p : end;
       if (chain[i].p == to) continue;  // a cusp's repeated point: nothing to draw
-      layer.pieces.push_back(flip({chain[i].p, to, chain[i].bulge, o}, mirror));
+      layer.pieces.push_back(in_drawing({chain[i].p, to, chain[i].bulge, o}, mirror));
     }
   }
 
@@ -577,14 +575,14 @@ class Reader {
     std::vector<Piece> edges;
     const size_t n = closed ? v.size() : v.size() - 1;
     for (size_t i = 0; i < n; ++i)
-      edges.push_back(flip({v[i].p, v[(i + 1) % v.size()].p, v[i].bulge, o}, mirror));
+      edges.push_back(in_drawing({v[i].p, v[(i + 1) % v.size()].p, v[i].bulge, o}, mirror));
     if (!closed) {
       layer.pieces.insert(layer.pieces.end(), edges.begin(), edges.end());
       return;
     }
-    ClosedLoop loop;
+    DrawnLoop loop;
     loop.edges = std::move(edges);
-    loop.origin = o;
+    loop.origin = o.describe();
     layer.loops.push_back(std::move(loop));
   }
 
@@ -602,7 +600,7 @@ Box layer_box(const Layer& layer) {
     box.add(p.from);
     box.add(p.to);
   }
-  for (const ClosedLoop& loop : layer.loops) {
+  for (const DrawnLoop& loop : layer.loops) {
     for (const Piece& p : loop.edges) box.add(p.from);
     if (loop.circle) {
       box.add(loop.center - Vec2{loop.radius, loop.radius});
@@ -621,11 +619,11 @@ std::string layer_list(const std::set<std::string>& layers) {
 
 // One loop a line: [[x, y], [x, y, bulge], ...] or {"circle": [cx, cy, r]}, numbers as
 // nlohmann writes them (they read back as the same doubles).
-std::string loops_text(const std::vector<OutLoop>& loops, Vec2 origin) {
+std::string loops_text(const std::vector<DrawnLoop>& loops, Vec2 origin) {
   const auto num = [](double v) { return nlohmann::json(v).dump(); };
   std::string out = "[";
   for (size_t k = 0; k < loops.size(); ++k) {
-    const OutLoop& loop = loops[k];
+    const DrawnLoop& loop = loops[k];
     out += k == 0 ? "\n      " : ",\n      ";
     if (loop.circle) {
       out += "{\"circle\": [" + num(loop.center.x - origin.x) + ", " +
@@ -646,7 +644,7 @@ std::string loops_text(const std::vector<OutLoop>& loops, Vec2 origin) {
 
 struct Imported {
   std::string json;
-  std::vector<OutLoop> moving, fixed;  // the loops as written, each naming its entities
+  std::vector<DrawnLoop> moving, fixed;  // the loops as written, each naming its entities
 };
 
 Imported import_loops(std::string_view text, std::string_view source,
@@ -666,8 +664,8 @@ Imported import_loops(std::string_view text, std::string_view source,
   const Box fixed_box = layer_box(reader.fixed);
   box.add(fixed_box.lo);
   box.add(fixed_box.hi);
-  const double join = options.join_tolerance.value_or(kDxfJoinRelative * length(box.hi - box.lo));
-  std::vector<OutLoop> moving, fixed;
+  const double join = options.join_tolerance.value_or(kDxfJoinRelative * box.diagonal());
+  std::vector<DrawnLoop> moving, fixed;
   if (std::string problem = dxf::build_loops(reader.moving, join, moving); !problem.empty())
     throw DxfError{"moving", "layer '" + options.moving_layer + "': " + problem};
   if (std::string problem = dxf::build_loops(reader.fixed, join, fixed); !problem.empty())
@@ -703,15 +701,6 @@ InputError input_error(std::string_view source, const DxfError& e) {
 
 }  // namespace
 
-DxfImportResult import_dxf(std::string_view dxf_text, std::string_view source,
-                           const DxfImportOptions& options) {
-  try {
-    return {import_loops(dxf_text, source, options).json, std::nullopt};
-  } catch (const DxfError& e) {
-    return {std::nullopt, input_error(source, e)};
-  }
-}
-
 DxfPairResult import_dxf_pair(std::string_view dxf_text, std::string_view source,
                               const DxfImportOptions& options) {
   DxfPairResult result;
@@ -729,9 +718,9 @@ DxfPairResult import_dxf_pair(std::string_view dxf_text, std::string_view source
     return result;
   }
   result.error = loaded.error;
-  // The pair reader numbers loops as the pair file lists them: say which entities those are.
+  // The pair reader numbers loops as the pair file lists them: say which entities those are,
   // and which entity drew the edge a vertex starts.
-  const std::vector<OutLoop>& loops =
+  const std::vector<DrawnLoop>& loops =
       result.error->part == "moving" ? imported.moving : imported.fixed;
   const int loop = result.error->loop, vertex = result.error->vertex;
   if (loop < 0 || loop >= static_cast<int>(loops.size())) return result;

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "cslice/dxf.hpp"
+#include "parts/dxf_internal.hpp"
 
 namespace cslice {
 
@@ -33,11 +34,9 @@ class Groups {
   std::string text_;
 };
 
-// $INSUNITS codes of the units a pair file may name (0: unitless).
+// The $INSUNITS code of the pair's units, as the importer reads them (0: unitless).
 int insunits(const std::string& units) {
-  static const std::pair<const char*, int> kCodes[] = {{"in", 1}, {"ft", 2}, {"mm", 4},
-                                                       {"cm", 5}, {"m", 6},  {"um", 13}};
-  for (const auto& [name, code] : kCodes)
+  for (const auto& [code, name] : dxf::kInsunits)
     if (units == name) return code;
   return 0;
 }

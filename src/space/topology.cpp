@@ -176,16 +176,17 @@ class TopologyBuilder {
   // The interval's model, built on first use; null where there is none.
   const BoundaryModel* model_of(int interval) {
     if (!models_wanted() || representative_[interval] < 0) return nullptr;
-    if (const auto* known = known_model(interval)) return *known ? &**known : nullptr;
-    if (!model_tried_[interval]) build_model(interval);
-    const std::optional<BoundaryModel>& model = built_models_[interval];
-    return model ? &*model : nullptr;
+    const std::optional<BoundaryModel>* model = known_model(interval);
+    if (!model) {
+      if (!built_models_[interval]) build_model(interval);
+      model = &*built_models_[interval];
+    }
+    return *model ? &**model : nullptr;
   }
 
   void build_model(int interval) {
     const Slice& representative = space_.slices[representative_[interval]].slice;
-    built_models_[interval] = detail::checked_model(pair_, representative);
-    model_tried_[interval] = 1;
+    built_models_[interval].emplace(detail::checked_model(pair_, representative));
   }
 
   // Per interval, the model for its side slices (up to two), those not known built in
@@ -193,7 +194,6 @@ class TopologyBuilder {
   std::vector<const BoundaryModel*> side_models() {
     std::vector<const BoundaryModel*> models(starts_.size(), nullptr);
     built_models_.assign(starts_.size(), std::nullopt);
-    model_tried_.assign(starts_.size(), 0);
     if (!models_wanted()) return models;
     std::vector<int> wanted;
     for (int i = 0; i < static_cast<int>(has_side_.size()); ++i) {
@@ -710,9 +710,8 @@ class TopologyBuilder {
   const Pair& pair_;
   const SlicedSpace& space_;
   TopologyOptions options_;
-  const detail::KnownModels* known_;                        // models built with the slices, or null
-  std::vector<std::optional<BoundaryModel>> built_models_;  // per interval: those built here
-  std::vector<char> model_tried_;  // per interval: built_models_ holds its model (or none)
+  const detail::KnownModels* known_;  // models built with the slices, or null
+  detail::KnownModels built_models_;  // per interval: those built here (empty: not tried)
   std::vector<double> criticals_, starts_, ends_, side_angles_;
   std::vector<char> has_side_;  // 2k: an extra slice before critical k; 2k + 1: after it
   std::vector<char> by_count_;  // per critical: joined by joins_follow_from_counts
