@@ -658,8 +658,9 @@ Imported import_loops(std::string_view text, std::string_view source,
        {std::tuple{&reader.moving, "moving", options.moving_layer},
         std::tuple{&reader.fixed, "fixed", options.fixed_layer}})
     if (layer->empty())
-      throw DxfError{part, "no outline (line, arc, circle or polyline) on layer '" + name + "' (" +
-                               layer_list(reader.layers_seen) + ")"};
+      throw DxfError{
+          part, "no outline (line, arc, circle, polyline, spline or ellipse) on layer '" + name +
+                    "' (" + layer_list(reader.layers_seen) + ")"};
   Box box = layer_box(reader.moving);
   const Box fixed_box = layer_box(reader.fixed);
   box.add(fixed_box.lo);
