@@ -3,7 +3,7 @@
 # writes for every example its description (info), a picture of the placed pair and of its
 # configuration-space slice, its critical orientations, its sliced configuration space, the
 # analysis of it and its contact-surface mesh into out/, then queries and a path on the
-# computed spaces, a pair imported from a CAD drawing (DXF) and analysed, and the paper's
+# computed spaces, pairs imported from drawings (DXF and SVG) and analysed, and the paper's
 # run-time table (out/stats.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -44,6 +44,14 @@ echo "== a pair from a CAD drawing: an 8-tooth gear in a 16-tooth ring gear (DXF
 head -5 out/gear-in-ring-analysis.txt
 echo "   the gear turns freely in the middle; meshed with the ring its teeth lock it in pockets"
 echo "   (the 128 other components): out/gear-in-ring-{slice.svg,space.json,analysis.txt}"
+echo "== a pair from an SVG drawing: a key in a keyhole (Inkscape layers in mm, docs/svg-import.md)"
+"$cslice" import examples/drawings/keyhole.svg --moving key --fixed plate --origin 30,51 \
+  -o out/keyhole.json
+"$cslice" slice out/keyhole.json --theta 0 --svg out/keyhole-slice.svg --dxf out/keyhole-slice.dxf
+"$cslice" compute out/keyhole.json -o out/keyhole-space.json
+"$cslice" analyze out/keyhole-space.json > out/keyhole-analysis.txt
+head -5 out/keyhole-analysis.txt
+echo "   the key turns in the keyhole and enters its slot upright: out/keyhole-{slice.svg,space.json,analysis.txt}"
 echo "== queries on the fixture's space: the engaging configuration, just below it, far away"
 printf '2.1 -0.7 0\n2.1 -0.75 0\n50 50 1\n' | "$cslice" query out/fixture-space.json
 echo "== a path for the fastener's pin, from outside (pin horizontal) into the cavity, through the slot"

@@ -1,11 +1,11 @@
-// `cslice import DRAWING.dxf -o PAIR.json`: a pair file from two layers of a CAD drawing
-// (docs/dxf-import.md). The pair is checked as `cslice info` would read it before anything
-// is written.
+// `cslice import DRAWING.dxf|DRAWING.svg -o PAIR.json`: a pair file from two layers of a CAD
+// drawing or two named elements of an SVG drawing (docs/dxf-import.md, docs/svg-import.md). The
+// pair is checked as `cslice info` would read it before anything is written.
 #include <iostream>
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "cslice/dxf.hpp"
+#include "cslice/drawing.hpp"
 
 namespace cslice::cli {
 
@@ -26,7 +26,7 @@ std::string loops_summary(const Part& part) {
 void run_import(const ImportOptions& opts) {
   check_positive_length_or_exit(opts.tolerance, "--tolerance");
   check_positive_length_or_exit(opts.join_tolerance, "--join-tolerance");
-  DxfImportOptions options;
+  DrawingImportOptions options;
   options.moving_layer = opts.moving_layer;
   options.fixed_layer = opts.fixed_layer;
   options.fixed_enclosure = opts.enclosure;
@@ -34,22 +34,24 @@ void run_import(const ImportOptions& opts) {
   options.tolerance = opts.tolerance;
   options.join_tolerance = opts.join_tolerance;
   options.name = opts.name;
-  DxfPairResult result = load_dxf_pair(opts.path, options);
+  DrawingPairResult result = load_drawing_pair(opts.path, options);
   if (!result.ok()) throw ExitError(kExitBadInput, result.error->message());
   const Pair& pair = *result.pair;
   const bool to_stdout = opts.output == kStdout;
   deliver_output(opts.output, std::move(result.pair_json));
   // A part drawn away from the drawing's origin turns about a point outside it: allowed (a
   // lever about its pivot), but more often a forgotten --origin.
-  const Box& box = pair.moving.box;
-  if (box.lo.x > 0.0 || box.lo.y > 0.0 || box.hi.x < 0.0 || box.hi.y < 0.0)
+  const Box& box = result.moving_box_drawn;
+  const Vec2 o = options.moving_origin;
+  if (box.lo.x > o.x || box.lo.y > o.y || box.hi.x < o.x || box.hi.y < o.y)
     std::cerr << "cslice: note: the moving part turns about the drawing point " << opts.origin
-              << ", outside its box (" << format_point(box.lo + options.moving_origin) << " to "
-              << format_point(box.hi + options.moving_origin)
+              << ", outside its box (" << format_point(box.lo) << " to " << format_point(box.hi)
               << "); --origin x,y names the point it turns about\n";
   if (!to_stdout)
     std::cout << "wrote " << opts.output << ": pair '" << pair.name << "', moving part "
-              << loops_summary(pair.moving) << ", fixed part " << loops_summary(pair.fixed) << "\n";
+              << loops_summary(pair.moving) << ", fixed part " << loops_summary(pair.fixed)
+              << "; as drawn, the configuration " << format_number(result.drawn_at.x) << ","
+              << format_number(result.drawn_at.y) << ",0\n";
 }
 
 }  // namespace
@@ -58,13 +60,17 @@ void register_import(CLI::App& app) {
   auto opts = std::make_shared<ImportOptions>();
   CLI::App* cmd = app.add_subcommand(
       "import",
-      "Make a pair file from two layers of an ASCII DXF drawing: lines, arcs, circles, "
-      "polylines (with bulges), splines and ellipses (as arcs) and inserted blocks; loose "
-      "pieces are joined end to end into loops (docs/dxf-import.md)");
-  cmd->add_option("drawing", opts->path, "DXF file (ASCII)")->required();
+      "Make a pair file from two layers of an ASCII DXF drawing (lines, arcs, circles, "
+      "polylines with bulges, splines and ellipses as arcs, inserted blocks) or two named "
+      "elements of an SVG drawing (paths, rectangles, circles, ellipses, polygons, reused "
+      "elements; Bezier curves and elliptical arcs as arcs); loose pieces are joined end to end "
+      "into loops (docs/dxf-import.md, docs/svg-import.md)");
+  cmd->add_option("drawing", opts->path, "DXF (ASCII) or SVG file")->required();
   cmd->add_option("-o,--output", opts->output, "Pair file to write (default: standard output)");
-  cmd->add_option("--moving", opts->moving_layer, "Layer of the moving part (default: moving)");
-  cmd->add_option("--fixed", opts->fixed_layer, "Layer of the fixed part (default: fixed)");
+  cmd->add_option("--moving", opts->moving_layer,
+                  "Layer (DXF) or element id or label (SVG) of the moving part (default: moving)");
+  cmd->add_option("--fixed", opts->fixed_layer,
+                  "Layer (DXF) or element id or label (SVG) of the fixed part (default: fixed)");
   cmd->add_flag("--enclosure", opts->enclosure,
                 "The fixed part is the region outside its loops (a housing)");
   cmd->add_option("--origin", opts->origin,

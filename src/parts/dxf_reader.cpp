@@ -14,24 +14,23 @@
 #include <cmath>
 #include <functional>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <set>
 #include <span>
 #include <tuple>
 
-#include "cslice/dxf.hpp"
+#include "cslice/drawing.hpp"
 #include "cslice/tolerance.hpp"
-#include "parts/dxf_internal.hpp"
+#include "parts/drawing_internal.hpp"
 #include "parts/validate.hpp"
 
 namespace cslice {
 
 namespace {
 
-using dxf::DrawnLoop;
-using dxf::Layer;
-using dxf::Origin;
-using dxf::Piece;
+using drawing::DrawnLoop;
+using drawing::Layer;
+using drawing::Origin;
+using drawing::Piece;
 
 struct Group {
   int code = 0;
@@ -39,10 +38,7 @@ struct Group {
   int line = 0;  // 1-based line of the code
 };
 
-// Thrown while reading; import_dxf_pair turns it into an InputError.
-struct DxfError {
-  std::string part, reason;
-};
+using drawing::DrawingError;
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
@@ -59,7 +55,7 @@ std::string quoted(std::string_view s) {
 std::vector<Group> read_groups(std::string_view text) {
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte order mark
   if (text.substr(0, 18) == "AutoCAD Binary DXF")
-    throw DxfError{"", "a binary DXF file; save the drawing as ASCII DXF"};
+    throw DrawingError{"", "a binary DXF file; save the drawing as ASCII DXF"};
   std::vector<std::string_view> lines;
   for (size_t start = 0; start < text.size();) {
     size_t end = text.find('\n', start);
@@ -68,7 +64,7 @@ std::vector<Group> read_groups(std::string_view text) {
     start = end + 1;
   }
   while (!lines.empty() && lines.back().empty()) lines.pop_back();
-  if (lines.empty()) throw DxfError{"", "the file is empty: not a DXF drawing"};
+  if (lines.empty()) throw DrawingError{"", "the file is empty: not a DXF drawing"};
   std::vector<Group> groups;
   for (size_t i = 0; i < lines.size(); i += 2) {
     Group g;
@@ -76,11 +72,11 @@ std::vector<Group> read_groups(std::string_view text) {
     const std::string_view code = lines[i];
     const auto [end, ec] = std::from_chars(code.data(), code.data() + code.size(), g.code);
     if (code.empty() || ec != std::errc() || end != code.data() + code.size())
-      throw DxfError{"", "line " + std::to_string(g.line) + ": group code " + quoted(code) +
-                             " is not an integer: not an ASCII DXF file"};
+      throw DrawingError{"", "line " + std::to_string(g.line) + ": group code " + quoted(code) +
+                                 " is not an integer: not an ASCII DXF file"};
     if (i + 1 >= lines.size())
-      throw DxfError{"", "line " + std::to_string(g.line) + ": group code " + std::string(code) +
-                             " has no value: the file is cut short"};
+      throw DrawingError{"", "line " + std::to_string(g.line) + ": group code " +
+                                 std::string(code) + " has no value: the file is cut short"};
     g.value = lines[i + 1];
     groups.push_back(g);
   }
@@ -111,7 +107,7 @@ bool same_layer(std::string_view a, std::string_view b) {
 // The drawing's two layers, filled entity by entity.
 class Reader {
  public:
-  explicit Reader(const DxfImportOptions& options) : options_(options) {}
+  explicit Reader(const DrawingImportOptions& options) : options_(options) {}
 
   Layer moving, fixed;
   std::set<std::string> layers_seen;  // layers holding any entity, for messages
@@ -152,7 +148,7 @@ class Reader {
         int code = 0;
         const std::string_view v = groups[i + 1].value;
         std::from_chars(v.data(), v.data() + v.size(), code);
-        for (const auto& [c, name] : dxf::kInsunits)
+        for (const auto& [c, name] : drawing::kInsunits)
           if (c == code) units = name;
       }
   }
@@ -275,8 +271,8 @@ class Reader {
   }
 
   [[noreturn]] void fail(const std::string& reason) const {
-    if (part_.empty()) throw DxfError{"", reason};
-    throw DxfError{part_, "layer '" + current_layer() + "': " + reason};
+    if (part_.empty()) throw DrawingError{"", reason};
+    throw DrawingError{part_, "layer '" + current_layer() + "': " + reason};
   }
   std::string current_layer() const {
     return part_ == "moving" ? options_.moving_layer : options_.fixed_layer;
@@ -481,10 +477,10 @@ class Reader {
   // The arcs along curve(u), u through `breaks`, as the layer's pieces to join.
   void add_curve(const std::function<Vec2(double)>& curve, const std::vector<double>& breaks,
                  double tolerance, bool mirror, const Origin& o, Layer& layer) {
-    std::vector<dxf::ArcVertex> chain;
+    std::vector<drawing::ArcVertex> chain;
     Vec2 end;
     if (!(tolerance > 0.0 && std::isfinite(tolerance)) ||
-        !dxf::arcs_along(curve, breaks, tolerance, kMaxCurvePieces, chain, end))
+        !drawing::arcs_along(curve, breaks, tolerance, kMaxCurvePieces, chain, end))
       fail(o.describe() + ": more than " + std::to_string(kMaxCurvePieces) +
            " arcs would be needed to follow it within " + detail::format_number(tolerance));
     for (size_t i = 0; i < chain.size(); ++i) {
@@ -495,7 +491,7 @@ class Reader {
   }
 
   void spline(const Entity& e, const Origin& o, Layer& layer) {
-    dxf::Nurbs n;
+    drawing::Nurbs n;
     const double degree = value(e, 71, o, 3.0);
     if (!(degree >= 1.0 && degree <= 10.0 && degree == std::floor(degree)))
       fail(o.describe() + ": degree " + detail::format_number(degree) + " is not 1 to 10");
@@ -506,14 +502,14 @@ class Reader {
       if (g.code == 10) n.points.push_back({number(g, o), 0.0});
       if (g.code == 20 && !n.points.empty()) n.points.back().y = number(g, o);
     }
-    if (const std::string problem = dxf::check_nurbs(n); !problem.empty())
+    if (const std::string problem = drawing::check_nurbs(n); !problem.empty())
       fail(o.describe() + ": " + problem);
     std::vector<double> breaks;  // the distinct knots of its domain
     for (size_t k = static_cast<size_t>(n.degree); k <= n.points.size(); ++k)
       if (breaks.empty() || n.knots[k] > breaks.back()) breaks.push_back(n.knots[k]);
     Box box;
     for (Vec2 p : n.points) box.add(p);
-    add_curve([&](double u) { return dxf::nurbs_point(n, u); }, breaks, fit_tolerance(box),
+    add_curve([&](double u) { return drawing::nurbs_point(n, u); }, breaks, fit_tolerance(box),
               mirrored(e, o), o, layer);
   }
 
@@ -587,28 +583,12 @@ class Reader {
   }
 
  private:
-  const DxfImportOptions& options_;
+  const DrawingImportOptions& options_;
   std::string part_;
   std::map<std::string, Block> blocks_;  // by upper-case name
   std::vector<Insert> inserts_;          // the INSERTs placing the entities being read
   long long block_entities_ = 0;
 };
-
-Box layer_box(const Layer& layer) {
-  Box box;
-  for (const Piece& p : layer.pieces) {
-    box.add(p.from);
-    box.add(p.to);
-  }
-  for (const DrawnLoop& loop : layer.loops) {
-    for (const Piece& p : loop.edges) box.add(p.from);
-    if (loop.circle) {
-      box.add(loop.center - Vec2{loop.radius, loop.radius});
-      box.add(loop.center + Vec2{loop.radius, loop.radius});
-    }
-  }
-  return box;
-}
 
 std::string layer_list(const std::set<std::string>& layers) {
   if (layers.empty()) return "the drawing has no entities";
@@ -617,131 +597,43 @@ std::string layer_list(const std::set<std::string>& layers) {
   return out;
 }
 
-// One loop a line: [[x, y], [x, y, bulge], ...] or {"circle": [cx, cy, r]}, numbers as
-// nlohmann writes them (they read back as the same doubles).
-std::string loops_text(const std::vector<DrawnLoop>& loops, Vec2 origin) {
-  const auto num = [](double v) { return nlohmann::json(v).dump(); };
-  std::string out = "[";
-  for (size_t k = 0; k < loops.size(); ++k) {
-    const DrawnLoop& loop = loops[k];
-    out += k == 0 ? "\n      " : ",\n      ";
-    if (loop.circle) {
-      out += "{\"circle\": [" + num(loop.center.x - origin.x) + ", " +
-             num(loop.center.y - origin.y) + ", " + num(loop.radius) + "]}";
-      continue;
-    }
-    out += "[";
-    for (size_t i = 0; i < loop.edges.size(); ++i) {
-      const Piece& p = loop.edges[i];
-      out += (i == 0 ? "[" : ", [") + num(p.from.x - origin.x) + ", " + num(p.from.y - origin.y);
-      if (p.bulge != 0.0) out += ", " + num(p.bulge);
-      out += "]";
-    }
-    out += "]";
-  }
-  return out + "\n    ]";
-}
-
-struct Imported {
-  std::string json;
-  std::vector<DrawnLoop> moving, fixed;  // the loops as written, each naming its entities
-};
-
-Imported import_loops(std::string_view text, std::string_view source,
-                      const DxfImportOptions& options) {
+// The two layers' outlines, each checked to be there.
+drawing::DrawnParts read_parts(std::string_view text, const DrawingImportOptions& options) {
   if (same_layer(options.moving_layer, options.fixed_layer))
-    throw DxfError{"", "the moving and the fixed part are both on layer '" + options.moving_layer +
-                           "': name one layer for each"};
+    throw DrawingError{"", "the moving and the fixed part are both on layer '" +
+                               options.moving_layer + "': name one layer for each"};
   Reader reader(options);
   reader.read(read_groups(text));
   for (const auto& [layer, part, name] :
        {std::tuple{&reader.moving, "moving", options.moving_layer},
         std::tuple{&reader.fixed, "fixed", options.fixed_layer}})
     if (layer->empty())
-      throw DxfError{
+      throw DrawingError{
           part, "no outline (line, arc, circle, polyline, spline or ellipse) on layer '" + name +
                     "' (" + layer_list(reader.layers_seen) + ")"};
-  Box box = layer_box(reader.moving);
-  const Box fixed_box = layer_box(reader.fixed);
-  box.add(fixed_box.lo);
-  box.add(fixed_box.hi);
-  const double join = options.join_tolerance.value_or(kDxfJoinRelative * box.diagonal());
-  std::vector<DrawnLoop> moving, fixed;
-  if (std::string problem = dxf::build_loops(reader.moving, join, moving); !problem.empty())
-    throw DxfError{"moving", "layer '" + options.moving_layer + "': " + problem};
-  if (std::string problem = dxf::build_loops(reader.fixed, join, fixed); !problem.empty())
-    throw DxfError{"fixed", "layer '" + options.fixed_layer + "': " + problem};
-  std::string name = options.name;
-  if (name.empty()) {
-    name = std::string(source.substr(source.find_last_of('/') + 1));
-    if (const size_t dot = name.rfind('.'); dot != std::string::npos && dot > 0) name.resize(dot);
-  }
-  std::string json = "{\n  \"name\": " + nlohmann::json(name).dump() + ",\n";
-  if (!reader.units.empty()) json += "  \"units\": " + nlohmann::json(reader.units).dump() + ",\n";
-  if (options.tolerance)
-    json += "  \"tolerance\": " + nlohmann::json(*options.tolerance).dump() + ",\n";
-  json +=
-      "  \"moving\": {\n    \"loops\": " + loops_text(moving, options.moving_origin) + "\n  },\n";
-  json += "  \"fixed\": {\n    \"enclosure\": " +
-          std::string(options.fixed_enclosure ? "true" : "false") +
-          ",\n    \"loops\": " + loops_text(fixed, {}) + "\n  }\n}\n";
-  Imported out;
-  out.json = std::move(json);
-  out.moving = std::move(moving);
-  out.fixed = std::move(fixed);
-  return out;
-}
-
-InputError input_error(std::string_view source, const DxfError& e) {
-  InputError error;
-  error.file = std::string(source);
-  error.part = e.part;
-  error.reason = e.reason;
-  return error;
+  drawing::DrawnParts parts;
+  parts.moving = std::move(reader.moving);
+  parts.fixed = std::move(reader.fixed);
+  parts.units = reader.units;
+  return parts;
 }
 
 }  // namespace
 
-DxfPairResult import_dxf_pair(std::string_view dxf_text, std::string_view source,
-                              const DxfImportOptions& options) {
-  DxfPairResult result;
-  Imported imported;
+DrawingPairResult import_dxf_pair(std::string_view dxf_text, std::string_view source,
+                                  const DrawingImportOptions& options) {
+  drawing::DrawnParts parts;
   try {
-    imported = import_loops(dxf_text, source, options);
-  } catch (const DxfError& e) {
-    result.error = input_error(source, e);
-    return result;
+    parts = read_parts(dxf_text, options);
+  } catch (const DrawingError& e) {
+    return drawing::failed(source, e);
   }
-  LoadResult loaded = parse_pair(imported.json, source);
-  result.pair_json = std::move(imported.json);
-  if (loaded.ok()) {
-    result.pair = std::move(loaded.pair);
-    return result;
-  }
-  result.error = loaded.error;
-  // The pair reader numbers loops as the pair file lists them: say which entities those are,
-  // and which entity drew the edge a vertex starts.
-  const std::vector<DrawnLoop>& loops =
-      result.error->part == "moving" ? imported.moving : imported.fixed;
-  const int loop = result.error->loop, vertex = result.error->vertex;
-  if (loop < 0 || loop >= static_cast<int>(loops.size())) return result;
-  std::string& reason = result.error->reason;
-  reason += " (loop " + std::to_string(loop) + " is " + loops[loop].origin;
-  if (vertex >= 0 && vertex < static_cast<int>(loops[loop].edges.size()))
-    reason += "; vertex " + std::to_string(vertex) + " starts the edge drawn by " +
-              loops[loop].edges[vertex].origin.describe();
-  reason += ")";
-  return result;
+  return drawing::pair_from_drawing(parts, source, options, "layer");
 }
 
-DxfPairResult load_dxf_pair(const std::string& path, const DxfImportOptions& options) {
-  std::string text;
-  if (std::optional<InputError> error = detail::read_input_file(path, text)) {
-    DxfPairResult result;
-    result.error = std::move(error);
-    return result;
-  }
-  return import_dxf_pair(text, path, options);
+DrawingPairResult load_dxf_pair(const std::string& path, const DrawingImportOptions& options) {
+  return drawing::import_file(
+      path, [&](std::string_view text) { return import_dxf_pair(text, path, options); });
 }
 
 }  // namespace cslice

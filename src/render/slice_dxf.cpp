@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "cslice/dxf.hpp"
-#include "parts/dxf_internal.hpp"
+#include "parts/drawing_internal.hpp"
 
 namespace cslice {
 
@@ -36,7 +36,7 @@ class Groups {
 
 // The $INSUNITS code of the pair's units, as the importer reads them (0: unitless).
 int insunits(const std::string& units) {
-  for (const auto& [code, name] : dxf::kInsunits)
+  for (const auto& [code, name] : drawing::kInsunits)
     if (units == name) return code;
   return 0;
 }

@@ -1,7 +1,12 @@
 #include "support/moved_examples.hpp"
 
+#include <gtest/gtest.h>
+
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <random>
+
+#include "cslice/classify.hpp"
 
 #include "support/examples.hpp"
 #include "support/random_polygons.hpp"
@@ -71,6 +76,23 @@ Pair mirrored_example(const std::string& name) {
     });
   }
   return parse_json_or_throw(j, name);
+}
+
+void expect_same_pair(const Pair& read, const Pair& original, const std::string& name,
+                      unsigned seed) {
+  EXPECT_EQ(read.moving.feature_count(), original.moving.feature_count()) << name;
+  EXPECT_EQ(read.fixed.feature_count(), original.fixed.feature_count()) << name;
+  EXPECT_NEAR(read.moving.area, original.moving.area, 1e-9 * original.tol.size) << name;
+  EXPECT_NEAR(read.fixed.area, original.fixed.area, 1e-9 * original.tol.size) << name;
+  EXPECT_NEAR(read.tol.contact, original.tol.contact, 1e-12 * original.tol.size) << name;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int differ = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const Pose pose{u(rng) * original.tol.size / 2, u(rng) * original.tol.size / 2, u(rng) * kPi};
+    differ += classify(read, pose) != classify(original, pose) ? 1 : 0;
+  }
+  EXPECT_EQ(differ, 0) << name;
 }
 
 }  // namespace cslice::testkit

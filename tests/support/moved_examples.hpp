@@ -24,4 +24,10 @@ Pair moved_example(const std::string& name, double scale, double angle, Vec2 shi
 // (bulges negated) and every loop runs the other way round (the reader orients loops).
 Pair mirrored_example(const std::string& name);
 
+// A pair read back from a drawing of `original` (tests of the DXF and SVG import): the same
+// features, areas and contact tolerance, and the same placement by classify at 2,000 random
+// configurations within the pair's size. Failures name `name`.
+void expect_same_pair(const Pair& read, const Pair& original, const std::string& name,
+                      unsigned seed);
+
 }  // namespace cslice::testkit

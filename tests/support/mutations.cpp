@@ -1,5 +1,7 @@
 #include "support/mutations.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cctype>
 #include <utility>
 
@@ -161,6 +163,24 @@ std::string TextMutator::duplicate_bracketed(std::string s, size_t i) {
   std::string copy = ",";
   copy += s.substr(open, close + 1 - open);
   return s.insert(close + 1, copy);
+}
+
+void expect_mutants_read_or_refused(
+    const std::string& base, int count,
+    const std::function<std::optional<std::string>(const std::string&)>& read) {
+  int accepted = 0, refused = 0;
+  for (int seed = 0; seed < count; ++seed) {
+    TextMutator mutator(static_cast<unsigned>(seed));
+    const std::optional<std::string> error = read(mutator.mutate(base));
+    if (!error) {
+      ++accepted;
+    } else {
+      ++refused;
+      EXPECT_FALSE(error->empty()) << "seed " << seed;
+    }
+  }
+  EXPECT_GT(accepted, 0);
+  EXPECT_GT(refused, 0);
 }
 
 }  // namespace cslice::testkit

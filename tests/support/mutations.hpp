@@ -5,6 +5,8 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -42,5 +44,12 @@ class TextMutator {
 
   std::mt19937 rng_;
 };
+
+// `count` mutations of `base` (seeds 0 to count - 1) read by `read`, which returns the error
+// message or nothing: checks that every refusal has a message and that some mutations are
+// accepted and some refused (the fuzz tests of the drawing readers).
+void expect_mutants_read_or_refused(
+    const std::string& base, int count,
+    const std::function<std::optional<std::string>(const std::string&)>& read);
 
 }  // namespace cslice::testkit

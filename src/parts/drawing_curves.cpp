@@ -4,9 +4,9 @@
 #include <array>
 #include <cmath>
 
-#include "parts/dxf_internal.hpp"
+#include "parts/drawing_internal.hpp"
 
-namespace cslice::dxf {
+namespace cslice::drawing {
 
 namespace {
 
@@ -117,4 +117,4 @@ Vec2 nurbs_point(const Nurbs& n, double u) {
   return {d[p].x / d[p].w, d[p].y / d[p].w};
 }
 
-}  // namespace cslice::dxf
+}  // namespace cslice::drawing

@@ -8,10 +8,10 @@
 #include <cstdint>
 #include <unordered_map>
 
-#include "parts/dxf_internal.hpp"
+#include "parts/drawing_internal.hpp"
 #include "parts/validate.hpp"
 
-namespace cslice::dxf {
+namespace cslice::drawing {
 
 std::string Origin::describe() const {
   return "the " + entity + " at line " + std::to_string(line) + block;
@@ -102,10 +102,72 @@ std::string describe_all(const std::vector<Origin>& origins) {
   return out;
 }
 
+// A loop drawn closed whose last vertex repeats its first has an edge of no length back to
+// it (SVG paths often close so): dropped, the next edge starting where the dropped one did.
+DrawnLoop without_short_edges(const DrawnLoop& loop, double join) {
+  DrawnLoop out = loop;
+  out.edges.clear();
+  for (const Piece& edge : loop.edges) {
+    if (distance(edge.from, edge.to) > join || loop.edges.size() <= 2)
+      out.edges.push_back(edge);
+    else if (!out.edges.empty())
+      out.edges.back().to = edge.to;
+  }
+  if (out.edges.size() >= 2) out.edges.front().from = out.edges.back().to;
+  return out;
+}
+
+// Consecutive arcs of one circle, turning the same way, as one arc: drawing programs split
+// circular outlines where nothing happens (a rounded rectangle's corners at the quarter
+// points, an arc of more than half a turn in halves), and each such vertex would be a feature
+// of the part, making contacts and critical orientations that change nothing. Arcs of one
+// circle all round make the circle.
+void merge_arcs_of_one_circle(DrawnLoop& loop, double join) {
+  const auto same_circle = [join](const Curve& a, const Curve& b) {
+    return a.is_arc() && b.is_arc() && (a.sweep > 0.0) == (b.sweep > 0.0) &&
+           distance(a.center, b.center) <= join && std::fabs(a.radius - b.radius) <= join &&
+           std::fabs(a.sweep + b.sweep) < kTwoPi - 1e-9;
+  };
+  bool merged = true;
+  while (merged && loop.edges.size() > 2) {
+    merged = false;
+    for (size_t i = 0; i < loop.edges.size() && loop.edges.size() > 2; ++i) {
+      const size_t j = (i + 1) % loop.edges.size();
+      const Piece& a = loop.edges[i];
+      const Piece& b = loop.edges[j];
+      const Curve ca = make_bulge_arc(a.from, a.to, a.bulge);
+      const Curve cb = make_bulge_arc(b.from, b.to, b.bulge);
+      if (!same_circle(ca, cb)) continue;
+      Piece joined = a;
+      joined.to = b.to;
+      joined.bulge = std::tan((ca.sweep + cb.sweep) / 4.0);
+      if (j == 0) {  // the last edge and the first: the loop now starts where the last did
+        loop.edges.front() = joined;
+        loop.edges.pop_back();
+      } else {
+        loop.edges[i] = joined;
+        loop.edges.erase(loop.edges.begin() + static_cast<std::ptrdiff_t>(j));
+      }
+      merged = true;
+    }
+  }
+  if (loop.edges.size() != 2) return;  // arcs of one circle all round: the circle
+  const Curve a = make_bulge_arc(loop.edges[0].from, loop.edges[0].to, loop.edges[0].bulge);
+  const Curve b = make_bulge_arc(loop.edges[1].from, loop.edges[1].to, loop.edges[1].bulge);
+  if (!(a.is_arc() && b.is_arc() && (a.sweep > 0.0) == (b.sweep > 0.0) &&
+        distance(a.center, b.center) <= join && std::fabs(a.radius - b.radius) <= join))
+    return;
+  loop.circle = true;
+  loop.center = 0.5 * (a.center + b.center);
+  loop.radius = 0.5 * (a.radius + b.radius);
+  loop.edges.clear();
+}
+
 }  // namespace
 
 std::string build_loops(const Layer& layer, double join, std::vector<DrawnLoop>& out) {
-  out.insert(out.end(), layer.loops.begin(), layer.loops.end());
+  const size_t first = out.size();
+  for (const DrawnLoop& loop : layer.loops) out.push_back(without_short_edges(loop, join));
   std::vector<int> partner;
   if (std::string problem = match_ends(layer.pieces, join, partner); !problem.empty())
     return problem;
@@ -126,7 +188,9 @@ std::string build_loops(const Layer& layer, double join, std::vector<DrawnLoop>&
     }
     loop.origin = describe_all(origins);
   }
+  for (size_t k = first; k < out.size(); ++k)
+    if (!out[k].circle) merge_arcs_of_one_circle(out[k], join);
   return "";
 }
 
-}  // namespace cslice::dxf
+}  // namespace cslice::drawing

@@ -1,5 +1,6 @@
-// What the DXF reader (dxf_reader.cpp) hands to the loop builder (dxf_loops.cpp): the
-// outline pieces of one layer, each knowing the entity it came from.
+// What the drawing readers (dxf_reader.cpp, svg_reader.cpp) hand to the loop builder
+// (drawing_loops.cpp) and the pair writer (drawing_pair.cpp): the outline pieces of one layer
+// or element, each knowing the entity or element it came from.
 #pragma once
 
 #include <functional>
@@ -7,14 +8,20 @@
 #include <utility>
 #include <vector>
 
+#include "cslice/drawing.hpp"
 #include "cslice/geometry.hpp"
 
-namespace cslice::dxf {
+namespace cslice::drawing {
+
+// Thrown while reading a drawing; pair_from_drawing's callers turn it into an InputError.
+struct DrawingError {
+  std::string part, reason;
+};
 
 // Where a piece came from, for messages: "the LINE at line 57".
 struct Origin {
-  std::string entity;  // LINE, ARC, CIRCLE, LWPOLYLINE, POLYLINE
-  int line = 0;        // 1-based line of the DXF file where the entity starts
+  std::string entity;  // LINE, ARC, ... for DXF; <path id="p1">, ... for SVG
+  int line = 0;        // 1-based line of the file where the entity starts
   std::string block;   // for an entity of a block: " in block 'B' (the INSERT at line N)"
   std::string describe() const;
 };
@@ -74,9 +81,31 @@ std::string check_nurbs(const Nurbs& n);
 // The point at u, clamped to the curve's domain [knots[degree], knots[points]].
 Vec2 nurbs_point(const Nurbs& n, double u);
 
-// The layer's loops drawn closed, then its pieces joined end to end (ends within `join` meet,
-// each with exactly one other). Returns an empty string, or why it cannot (an open end, ends
-// meeting three or more at a point).
+// The layer's loops drawn closed, each without its edges shorter than `join` (a closing edge
+// back to a start the last vertex repeats), then its pieces joined end to end (ends within
+// `join` meet, each with exactly one other). Returns an empty string, or why it cannot (an
+// open end, ends meeting three or more at a point).
 std::string build_loops(const Layer& layer, double join, std::vector<DrawnLoop>& out);
 
-}  // namespace cslice::dxf
+// ---- The pair (drawing_pair.cpp) ----------------------------------------------------------
+
+struct DrawnParts {
+  Layer moving, fixed;  // each checked to have an outline
+  std::string units;    // the pair's, or empty
+  // SVG: the drawing's y axis points down, the pair's up (y is negated, arcs turn the other
+  // way). Either way the fixed part keeps the drawing's coordinates and the moving part's are
+  // taken from options.moving_origin.
+  bool y_down = false;
+};
+
+// The parts' loops as a pair file, read back by parse_pair. `what` names a part's source in
+// messages ("layer" or "element"); `source` is the file.
+DrawingPairResult pair_from_drawing(const DrawnParts& parts, std::string_view source,
+                                    const DrawingImportOptions& options, std::string_view what);
+// The error thrown while reading, as a result.
+DrawingPairResult failed(std::string_view source, const DrawingError& e);
+// `import` of the text of the file at `path`, or the error reading it.
+DrawingPairResult import_file(const std::string& path,
+                              const std::function<DrawingPairResult(std::string_view)>& import);
+
+}  // namespace cslice::drawing
