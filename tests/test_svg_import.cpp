@@ -110,6 +110,14 @@ TEST(SvgImport, InkscapeLayersInMillimetres) {
   EXPECT_EQ(r.drawn_at, (Vec2{50, -40}));
   EXPECT_EQ(classify(pair, {50, -40, 0.0}), Placement::free);
   EXPECT_EQ(classify(pair, {50, -12, 0.0}), Placement::blocked);  // within 4 of the top wall
+  // Measured from the drawn placement: the fixed part's coordinates less the origin's too.
+  options.fixed_origin = options.moving_origin;
+  const DrawingPairResult relative = import(text, options);
+  ASSERT_TRUE(relative.ok()) << relative.error->message();
+  EXPECT_EQ(relative.drawn_at, (Vec2{0, 0}));
+  EXPECT_EQ(relative.pair->fixed.box.lo.x, -40.0);
+  EXPECT_EQ(relative.pair->fixed.box.hi.y, 30.0);  // the top wall, 10 mm down the page, 30 above 40
+  EXPECT_EQ(classify(*relative.pair, {0, 0, 0.0}), Placement::free);
   // Without a viewBox the user unit is the px, and so are the coordinates.
   const Pair px = import_ok(svg(moving("<circle r=\"2\"/>")), {});
   EXPECT_EQ(px.units, "px");
@@ -398,6 +406,22 @@ TEST_F(SvgImportCli, ReadsSvgByExtensionOrContent) {
     EXPECT_NE(ok.out.find("as drawn, the configuration 0,0,0"), std::string::npos) << ok.out;
     EXPECT_EQ(testkit::run_cli("info " + pair, dir_).status, 0);
   }
+  // Far out on the sheet: a note names --fixed-origin, which measures from the drawn placement.
+  testkit::write_file(
+      dir_ / "far.svg",
+      svg("<g id=\"fixed\"><rect x=\"1000\" y=\"990\" width=\"20\" height=\"4\"/></g>"
+          "<g id=\"moving\"><circle cx=\"1010\" cy=\"1000\" r=\"2\"/></g>"));
+  const std::string far = testkit::quoted((dir_ / "far.svg").string());
+  const std::string far_pair = testkit::quoted((dir_ / "far.json").string());
+  const testkit::RunResult noted =
+      testkit::run_cli("import " + far + " --origin 1010,1000 -o " + far_pair, dir_);
+  EXPECT_EQ(noted.status, 0) << noted.err;
+  EXPECT_NE(noted.err.find("--fixed-origin 1010,1000"), std::string::npos) << noted.err;
+  const testkit::RunResult mended = testkit::run_cli(
+      "import " + far + " --origin 1010,1000 --fixed-origin 1010,1000 -o " + far_pair, dir_);
+  EXPECT_EQ(mended.status, 0) << mended.err;
+  EXPECT_EQ(mended.err, "");
+  EXPECT_NE(mended.out.find("as drawn, the configuration 0,0,0"), std::string::npos) << mended.out;
   testkit::write_file(dir_ / "bad.svg", svg(moving("<path d=\"M 0 0 Q\"/>")));
   const std::string out = testkit::quoted((dir_ / "bad.json").string());
   const testkit::RunResult bad = testkit::run_cli(

@@ -22,6 +22,11 @@ struct DrawingImportOptions {
   bool fixed_enclosure = false;  // the fixed part is the region outside its loops
   // The drawing point that becomes the moving part's body origin, the point it turns about.
   Vec2 moving_origin;
+  // The drawing point that becomes the origin of the fixed part's coordinates, and so of
+  // configuration space: by default the drawing's own origin; the moving origin's point makes
+  // the drawn placement the configuration (0, 0, 0) and keeps the tolerances fine when the
+  // parts lie far out on the sheet (docs/pair-format.md, Size and tolerances).
+  Vec2 fixed_origin;
   std::optional<double> tolerance;       // the pair's tolerance, in drawing units
   std::optional<double> join_tolerance;  // ends this close meet (default: kDxfJoinRelative)
   std::string name;                      // the pair's name (default: the source's)

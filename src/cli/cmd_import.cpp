@@ -1,11 +1,13 @@
 // `cslice import DRAWING.dxf|DRAWING.svg -o PAIR.json`: a pair file from two layers of a CAD
 // drawing or two named elements of an SVG drawing (docs/dxf-import.md, docs/svg-import.md). The
 // pair is checked as `cslice info` would read it before anything is written.
+#include <cmath>
 #include <iostream>
 #include <memory>
 
 #include "cli/commands.hpp"
 #include "cslice/drawing.hpp"
+#include "cslice/tolerance.hpp"
 
 namespace cslice::cli {
 
@@ -14,6 +16,7 @@ namespace {
 struct ImportOptions {
   std::string path, output = kStdout;
   std::string moving_layer = "moving", fixed_layer = "fixed", origin = "0,0", name;
+  std::optional<std::string> fixed_origin;
   bool enclosure = false;
   std::optional<double> tolerance, join_tolerance;
 };
@@ -31,6 +34,8 @@ void run_import(const ImportOptions& opts) {
   options.fixed_layer = opts.fixed_layer;
   options.fixed_enclosure = opts.enclosure;
   options.moving_origin = parse_point_or_exit(opts.origin, "--origin");
+  if (opts.fixed_origin)
+    options.fixed_origin = parse_point_or_exit(*opts.fixed_origin, "--fixed-origin");
   options.tolerance = opts.tolerance;
   options.join_tolerance = opts.join_tolerance;
   options.name = opts.name;
@@ -47,6 +52,16 @@ void run_import(const ImportOptions& opts) {
     std::cerr << "cslice: note: the moving part turns about the drawing point " << opts.origin
               << ", outside its box (" << format_point(box.lo) << " to " << format_point(box.hi)
               << "); --origin x,y names the point it turns about\n";
+  // Far out on the sheet, the fixed part's coordinates are large beside the parts: say so at
+  // the source, where one option mends it.
+  const double coarsening = placement_coarsening(pair.moving, pair.fixed);
+  if (coarsening >= kPlacementCoarseningWarning)
+    std::cerr << "cslice: note: the fixed part lies far from the drawing's origin, so the pair's "
+                 "tolerances are "
+              << format_number(std::round(coarsening))
+              << " times coarser than the parts need; --fixed-origin " << opts.origin
+              << " (the --origin point) measures configurations from the drawn placement "
+                 "instead, with full accuracy (docs/pair-format.md, Size and tolerances)\n";
   if (!to_stdout)
     std::cout << "wrote " << opts.output << ": pair '" << pair.name << "', moving part "
               << loops_summary(pair.moving) << ", fixed part " << loops_summary(pair.fixed)
@@ -76,6 +91,10 @@ void register_import(CLI::App& app) {
   cmd->add_option("--origin", opts->origin,
                   "Drawing point x,y that becomes the moving part's body origin, the point it "
                   "turns about (default: 0,0)");
+  cmd->add_option("--fixed-origin", opts->fixed_origin,
+                  "Drawing point x,y that becomes the origin of the fixed part's coordinates and "
+                  "of configuration space (default: the drawing's origin; the --origin point "
+                  "makes the drawn placement 0,0,0)");
   cmd->add_option("--tolerance", opts->tolerance, "The pair's tolerance, in drawing units");
   cmd->add_option("--join-tolerance", opts->join_tolerance,
                   "Ends of lines and arcs this close meet (drawing units; default: 1e-6 of the "

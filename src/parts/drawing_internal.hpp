@@ -93,8 +93,7 @@ struct DrawnParts {
   Layer moving, fixed;  // each checked to have an outline
   std::string units;    // the pair's, or empty
   // SVG: the drawing's y axis points down, the pair's up (y is negated, arcs turn the other
-  // way). Either way the fixed part keeps the drawing's coordinates and the moving part's are
-  // taken from options.moving_origin.
+  // way). Either way each part's coordinates are taken from its origin in the options.
   bool y_down = false;
 };
 

@@ -111,7 +111,7 @@ DrawingPairResult pair_from_drawing(const DrawnParts& parts, std::string_view so
     if (std::string problem = build_loops(*layer, join, *loops); !problem.empty())
       return failed(source, {part, std::string(what) + " '" + *name + "': " + problem});
   const ToPair moving_to_pair{options.moving_origin, parts.y_down};
-  const ToPair fixed_to_pair{{}, parts.y_down};
+  const ToPair fixed_to_pair{options.fixed_origin, parts.y_down};
   std::string json = "{\n  \"name\": " + nlohmann::json(pair_name(source, options)).dump() + ",\n";
   if (!parts.units.empty()) json += "  \"units\": " + nlohmann::json(parts.units).dump() + ",\n";
   if (options.tolerance)
