@@ -432,11 +432,25 @@ TEST(DxfImport, BlocksAreDrawnWhereTheyAreInserted) {
   EXPECT_NEAR(pair.moving.area, area, 1e-12);
   EXPECT_NEAR(pair.moving.box.lo.x, 4.0, 1e-12);  // -1 for PEG's base, +5 for CAP's
   EXPECT_NEAR(pair.moving.box.lo.y, -1.0, 1e-12);
-  // Refused: an uneven scale (the cap would be half an ellipse), a block inserting itself.
-  const std::string uneven = import_error(with_blocks(
-      {{"PEG", {0, 0}, blocks_text}}, insert("moving", "PEG", {0, 0}, 1, 2, 0) + frame_text));
-  EXPECT_NE(uneven.find("in block 'PEG' (the INSERT at line"), std::string::npos) << uneven;
-  EXPECT_NE(uneven.find("scaled unevenly"), std::string::npos) << uneven;
+  // Scaled unevenly, 1 by 2: the cap is half an ellipse, followed by arcs; the area doubles.
+  pair = import_ok(with_blocks({{"PEG", {0, 0}, blocks_text}},
+                               insert("moving", "PEG", {0, 0}, 1, 2, 0) + frame_text));
+  EXPECT_NEAR(pair.moving.area, 2 * area, 1e-4);
+  EXPECT_NEAR(pair.moving.box.hi.x, 1.5, 1e-5);
+  EXPECT_NEAR(pair.moving.box.hi.y, 2.0, 1e-12);
+  EXPECT_GT(pair.moving.arc_count(), 1);
+  // An array (MINSERT): 3 columns 4 apart, 2 rows 5 apart, turned a quarter: six pegs.
+  pair = import_ok(with_blocks({{"PEG", {0, 0}, blocks_text}},
+                               insert("moving", "PEG", {0, 0}, 1, 1, 90) +
+                                   "  70\n3\n 71\n2\n 44\n4\n 45\n5\n" + frame_text));
+  EXPECT_EQ(pair.moving.loops.size(), 6u);
+  EXPECT_NEAR(pair.moving.area, 6 * area, 1e-9);
+  EXPECT_NEAR(pair.moving.box.hi.y, 9.5, 1e-12);   // columns along the turned x axis: y
+  EXPECT_NEAR(pair.moving.box.lo.x, -6.0, 1e-12);  // rows along the turned y axis: -x
+  // Refused: a scale of 0, a block inserting itself.
+  const std::string flat = import_error(with_blocks(
+      {{"PEG", {0, 0}, blocks_text}}, insert("moving", "PEG", {0, 0}, 1, 0, 0) + frame_text));
+  EXPECT_NE(flat.find("a scale of 0"), std::string::npos) << flat;
   Drawing loop;
   loop.add(0, "INSERT").add(8, "0").add(2, "LOOP").add(10, "1").add(20, "0");
   const std::string nested = import_error(with_blocks(

@@ -328,17 +328,29 @@ class Reader {
     return placed(p);
   }
 
-  // A piece in the drawing's coordinates; a mirror, of the entity or of an INSERT, turns its
-  // arc the other way. Ends must be numbers: an arc's start angle of 1e308 degrees has no
-  // cosine.
-  Piece in_drawing(Piece p, bool mirror) const {
-    check_inserts(p.origin);
-    p.from = drawing_point(p.from, mirror);
-    p.to = drawing_point(p.to, mirror);
-    if (mirror != inserts_mirror()) p.bulge = -p.bulge;
-    if (!(finite(p.from) && finite(p.to) && std::isfinite(p.bulge)))
+  // An edge in the drawing's coordinates, into `out`; a mirror, of the entity or of an
+  // INSERT, turns its arc the other way. Under a block scaled unevenly an arc is part of an
+  // ellipse, followed by arcs. Ends must be numbers: an arc's start angle of 1e308 degrees has
+  // no cosine.
+  void add_edge(Piece p, bool mirror, std::vector<Piece>& out) const {
+    const Vec2 from = drawing_point(p.from, mirror), to = drawing_point(p.to, mirror);
+    if (!(finite(from) && finite(to) && std::isfinite(p.bulge)))
       fail(p.origin.describe() + ": its ends are beyond the range of numbers");
-    return p;
+    if (p.bulge == 0.0 || inserts_keep_circles()) {
+      p.bulge = mirror != inserts_mirror() ? -p.bulge : p.bulge;
+      p.from = from;
+      p.to = to;
+      out.push_back(p);
+      return;
+    }
+    const Curve arc = make_bulge_arc(p.from, p.to, p.bulge);
+    const size_t first = out.size();
+    add_curve_pieces([&](double t) { return point_at(arc, t); }, {0.0, 0.25, 0.5, 0.75, 1.0},
+                     bounding_box(arc), mirror, p.origin, out);
+    if (out.size() > first) {  // the ends exactly where the neighbouring edges meet them
+      out[first].from = from;
+      out.back().to = to;
+    }
   }
 
   // Where an entity is, for messages: in a block, with the INSERT placing it.
@@ -356,7 +368,6 @@ class Reader {
     Vec2 base, at;
     double sx = 1.0, sy = 1.0, c = 1.0, s = 0.0;
     bool ocs_mirror = false;
-    bool refused = false;  // scaled unevenly (arcs would be ellipses) or arrayed
   };
   static constexpr size_t kMaxBlockDepth = 8;
   // Entities drawn through blocks, at most: a block inserting another ten times, eight deep,
@@ -381,27 +392,35 @@ class Reader {
     in.at = {value(e, 10, o, 0.0), value(e, 20, o, 0.0)};
     in.sx = value(e, 41, o, 1.0);
     in.sy = value(e, 42, o, 1.0);
+    if (in.sx == 0.0 || in.sy == 0.0)
+      fail(o.describe() + ": a scale of 0 flattens its block to nothing");
     const double turn = value(e, 50, o, 0.0) * kPi / 180.0;
     in.c = std::cos(turn);
     in.s = std::sin(turn);
     in.ocs_mirror = mirrored(e, o);
-    in.refused = in.sx == 0.0 ||
-                 std::fabs(std::fabs(in.sx) - std::fabs(in.sy)) > 1e-12 * std::fabs(in.sx) ||
-                 value(e, 70, o, 1.0) > 1.0 || value(e, 71, o, 1.0) > 1.0;
-    inserts_.push_back(std::move(in));
-    for (const EntityWithVertices& b : it->second.entities) {
-      if (++block_entities_ > kMaxBlockEntities)
-        fail(o.describe() + ": its blocks draw more than " + std::to_string(kMaxBlockEntities) +
-             " entities");
-      entity(b.entity, &b.vertices);
-    }
-    inserts_.pop_back();
-  }
-
-  void check_inserts(const Origin& o) const {
-    for (const Insert& in : inserts_)
-      if (in.refused)
-        fail(o.describe() + ": its block is scaled unevenly or arrayed; explode the block");
+    // MINSERT: columns (code 70) and rows (71) of copies, spaced (44, 45) along the turned axes.
+    const double columns = value(e, 70, o, 1.0), rows = value(e, 71, o, 1.0);
+    for (double count : {columns, rows})
+      if (!(count >= 1.0 && count <= 32767.0 && count == std::floor(count)))
+        fail(o.describe() + ": " + detail::format_number(count) +
+             " columns or rows (group codes 70, 71) are not a count from 1 to 32767");
+    const Vec2 step{value(e, 44, o, 0.0), value(e, 45, o, 0.0)}, at = in.at;
+    for (int row = 0; row < static_cast<int>(rows); ++row)
+      for (int column = 0; column < static_cast<int>(columns); ++column) {
+        const Vec2 d{column * step.x, row * step.y};
+        in.at = at + Vec2{in.c * d.x - in.s * d.y, in.s * d.x + in.c * d.y};
+        if (columns * rows > 1.0)
+          in.context = " in block '" + name + "' (" + o.describe() + ", row " +
+                       std::to_string(row + 1) + ", column " + std::to_string(column + 1) + ")";
+        inserts_.push_back(in);
+        for (const EntityWithVertices& b : it->second.entities) {
+          if (++block_entities_ > kMaxBlockEntities)
+            fail(o.describe() + ": its blocks draw more than " + std::to_string(kMaxBlockEntities) +
+                 " entities");
+          entity(b.entity, &b.vertices);
+        }
+        inserts_.pop_back();
+      }
   }
 
   // A block's point in the drawing, through every INSERT placing it (the innermost first).
@@ -423,13 +442,19 @@ class Reader {
     for (const Insert& in : inserts_) scale *= std::fabs(in.sx);
     return scale;
   }
+  // Whether every INSERT placing the entity scales evenly (turns and mirrors keep circles).
+  bool inserts_keep_circles() const {
+    for (const Insert& in : inserts_)
+      if (std::fabs(std::fabs(in.sx) - std::fabs(in.sy)) > 1e-12 * std::fabs(in.sx)) return false;
+    return true;
+  }
 
   static bool finite(Vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
   void line(const Entity& e, const Origin& o, Layer& layer) {
     Piece p{
         {required(e, 10, o), required(e, 20, o)}, {required(e, 11, o), required(e, 21, o)}, 0.0, o};
-    layer.pieces.push_back(in_drawing(p, mirrored(e, o)));
+    add_edge(p, mirrored(e, o), layer.pieces);
   }
 
   void arc(const Entity& e, const Origin& o, Layer& layer) {
@@ -445,7 +470,7 @@ class Reader {
     const double a0 = start * kPi / 180.0, a1 = end * kPi / 180.0;
     Piece p{c + Vec2{r * std::cos(a0), r * std::sin(a0)},
             c + Vec2{r * std::cos(a1), r * std::sin(a1)}, std::tan(sweep * kPi / 180.0 / 4.0), o};
-    layer.pieces.push_back(in_drawing(p, mirrored(e, o)));
+    add_edge(p, mirrored(e, o), layer.pieces);
   }
 
   void circle(const Entity& e, const Origin& o, Layer& layer) {
@@ -455,8 +480,17 @@ class Reader {
     const double radius = required(e, 40, o);
     if (!(radius > 0.0))
       fail(o.describe() + ": radius " + detail::format_number(radius) + " is not positive");
-    check_inserts(o);
-    loop.center = drawing_point(center, mirrored(e, o));
+    const bool mirror = mirrored(e, o);
+    if (!inserts_keep_circles()) {  // an ellipse: its two halves, followed by arcs
+      loop.circle = false;
+      loop.origin = o.describe();
+      for (double side : {1.0, -1.0})
+        add_edge({center + Vec2{side * radius, 0.0}, center - Vec2{side * radius, 0.0}, 1.0, o},
+                 mirror, loop.edges);
+      layer.loops.push_back(loop);
+      return;
+    }
+    loop.center = drawing_point(center, mirror);
     loop.radius = radius * inserts_scale();
     if (!(finite(loop.center) && std::isfinite(loop.radius)))
       fail(o.describe() + ": its centre or radius is beyond the range of numbers");
@@ -474,19 +508,29 @@ class Reader {
     return kDxfCurveFitPerTolerance * tolerance;
   }
 
-  // The arcs along curve(u), u through `breaks`, as the layer's pieces to join.
-  void add_curve(const std::function<Vec2(double)>& curve, const std::vector<double>& breaks,
-                 double tolerance, bool mirror, const Origin& o, Layer& layer) {
+  // The arcs along curve(u) (in the entity's coordinates, within `box`), u through `breaks`,
+  // into `out`. They follow the curve as drawn, through the INSERTs placing it, so that the
+  // tolerance is the drawing's and an uneven scale draws what it should.
+  void add_curve_pieces(const std::function<Vec2(double)>& curve, const std::vector<double>& breaks,
+                        const Box& box, bool mirror, const Origin& o,
+                        std::vector<Piece>& out) const {
+    Box drawn;
+    for (Vec2 corner : {box.lo, box.hi, Vec2{box.lo.x, box.hi.y}, Vec2{box.hi.x, box.lo.y}})
+      drawn.add(drawing_point(corner, mirror));
+    const double tolerance = fit_tolerance(drawn);
     std::vector<drawing::ArcVertex> chain;
     Vec2 end;
     if (!(tolerance > 0.0 && std::isfinite(tolerance)) ||
-        !drawing::arcs_along(curve, breaks, tolerance, kMaxCurvePieces, chain, end))
+        !drawing::arcs_along([&](double u) { return drawing_point(curve(u), mirror); }, breaks,
+                             tolerance, kMaxCurvePieces, chain, end))
       fail(o.describe() + ": more than " + std::to_string(kMaxCurvePieces) +
            " arcs would be needed to follow it within " + detail::format_number(tolerance));
     for (size_t i = 0; i < chain.size(); ++i) {
       const Vec2 to = i + 1 < chain.size() ? chain[i + 1].p : end;
       if (chain[i].p == to) continue;  // a cusp's repeated point: nothing to draw
-      layer.pieces.push_back(in_drawing({chain[i].p, to, chain[i].bulge, o}, mirror));
+      if (!(finite(chain[i].p) && finite(to) && std::isfinite(chain[i].bulge)))
+        fail(o.describe() + ": its points are beyond the range of numbers");
+      out.push_back({chain[i].p, to, chain[i].bulge, o});
     }
   }
 
@@ -509,8 +553,8 @@ class Reader {
       if (breaks.empty() || n.knots[k] > breaks.back()) breaks.push_back(n.knots[k]);
     Box box;
     for (Vec2 p : n.points) box.add(p);
-    add_curve([&](double u) { return drawing::nurbs_point(n, u); }, breaks, fit_tolerance(box),
-              mirrored(e, o), o, layer);
+    add_curve_pieces([&](double u) { return drawing::nurbs_point(n, u); }, breaks, box,
+                     mirrored(e, o), o, layer.pieces);
   }
 
   void ellipse(const Entity& e, const Origin& o, Layer& layer) {
@@ -529,8 +573,8 @@ class Reader {
     Box box;
     box.add(c - Vec2{r, r});
     box.add(c + Vec2{r, r});
-    add_curve([&](double t) { return c + major * std::cos(t) + minor * std::sin(t); }, breaks,
-              fit_tolerance(box), mirrored(e, o), o, layer);
+    add_curve_pieces([&](double t) { return c + major * std::cos(t) + minor * std::sin(t); },
+                     breaks, box, mirrored(e, o), o, layer.pieces);
   }
 
   struct Vertex {
@@ -571,7 +615,7 @@ class Reader {
     std::vector<Piece> edges;
     const size_t n = closed ? v.size() : v.size() - 1;
     for (size_t i = 0; i < n; ++i)
-      edges.push_back(in_drawing({v[i].p, v[(i + 1) % v.size()].p, v[i].bulge, o}, mirror));
+      add_edge({v[i].p, v[(i + 1) % v.size()].p, v[i].bulge, o}, mirror, edges);
     if (!closed) {
       layer.pieces.insert(layer.pieces.end(), edges.begin(), edges.end());
       return;
