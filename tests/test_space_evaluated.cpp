@@ -196,14 +196,7 @@ TEST(EvaluatedSlices, ModelMustReproduceItsSlice) {
 // carries' steps lie inside an interval, so they are evaluated from its model, as side slices
 // are; the topology is the one computed from scratch.
 TEST(EvaluatedSlices, CarriesStepThroughEvaluatedSlices) {
-  const double pitch = kTwoPi / 4, ring_pitch = kTwoPi / 9;
-  const testkit::LoopVertices gear =
-      testkit::gear({4, 3.0, 0.75, 0.126 * pitch, 0.2625 * pitch, 0.0});
-  const testkit::LoopVertices ring =
-      testkit::gear({9, 3.5, 5.75, 0.2625 * ring_pitch, 0.126 * ring_pitch, ring_pitch / 2});
-  const std::string json =
-      "{\"name\":\"gear in ring\",\"moving\":{\"loops\":[" + testkit::loop_json(gear) +
-      "]},\"fixed\":{\"enclosure\":true,\"loops\":[" + testkit::loop_json(ring) + "]}}";
+  const std::string json = testkit::gear_in_ring_json(4, 3.0, 0.75, 9, 3.5, 5.75);
   const LoadResult loaded = parse_pair(json, "gear in ring");
   ASSERT_TRUE(loaded.ok()) << loaded.error->message();
   const SlicedSpace fast = space_of(*loaded.pair, true), slow = space_of(*loaded.pair, false);

@@ -19,6 +19,7 @@
 #include "cslice/equivalence.hpp"
 #include "cslice/space.hpp"
 #include "geometry/union_find.hpp"
+#include "space/carry.hpp"
 #include "space/space_build.hpp"
 
 namespace cslice {
@@ -30,13 +31,6 @@ constexpr size_t kMaxProblems = 20;  // problems kept in words; the counts keep 
 // nor distinct boundary labels match: 4 shrinks the gap 16 times (the paper examples need
 // none, their labels decide).
 constexpr int kMaxRefinement = 4;
-// Slices a sample may be carried through from a critical slice to a side (`carry`): each step
-// turns by half the sample's clearance over the reach, and a thin component growing away from
-// the critical orientation at a small fraction of the reach per radian multiplies its
-// clearance by little per step (stress seed 107007: 620 steps across 1e-3 rad from a
-// triangle of area 3e-13). Taken only for critical components thinner than the reach times
-// the side's gap.
-constexpr int kMaxCarrySteps = 1000;
 
 // for_each_index_parallel's per-thread state, for tasks that need none.
 struct NoScratch {
@@ -58,6 +52,7 @@ class TopologyBuilder {
     compute_side_slices();
     build_chains();
     build_cells();
+    carry_all();
     UnionFind components(static_cast<int>(topo_.cells.size()));
     for (int k = 0; k < static_cast<int>(criticals_.size()); ++k) transition(k, components);
     build_components(components);
@@ -184,6 +179,20 @@ class TopologyBuilder {
     return *model ? &**model : nullptr;
   }
 
+  // The models of these intervals not known or built yet, built in parallel; model_of then
+  // only reads them, from any thread.
+  void build_models(std::vector<int> intervals) {
+    if (!models_wanted()) return;
+    std::sort(intervals.begin(), intervals.end());
+    intervals.erase(std::unique(intervals.begin(), intervals.end()), intervals.end());
+    std::erase_if(intervals, [&](int i) {
+      return representative_[i] < 0 || known_model(i) || built_models_[i];
+    });
+    detail::for_each_index_parallel<NoScratch>(
+        pair_, intervals.size(), options_.threads,
+        [&](size_t k, NoScratch&) { build_model(intervals[k]); });
+  }
+
   void build_model(int interval) {
     const Slice& representative = space_.slices[representative_[interval]].slice;
     built_models_[interval].emplace(detail::checked_model(pair_, representative));
@@ -196,16 +205,9 @@ class TopologyBuilder {
     built_models_.assign(starts_.size(), std::nullopt);
     if (!models_wanted()) return models;
     std::vector<int> wanted;
-    for (int i = 0; i < static_cast<int>(has_side_.size()); ++i) {
-      const int interval = side_interval(i);
-      if (has_side_[i] && representative_[interval] >= 0 && !known_model(interval))
-        wanted.push_back(interval);
-    }
-    std::sort(wanted.begin(), wanted.end());
-    wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
-    detail::for_each_index_parallel<NoScratch>(
-        pair_, wanted.size(), options_.threads,
-        [&](size_t k, NoScratch&) { build_model(wanted[k]); });
+    for (int i = 0; i < static_cast<int>(has_side_.size()); ++i)
+      if (has_side_[i]) wanted.push_back(side_interval(i));
+    build_models(wanted);
     for (int i = 0; i < static_cast<int>(has_side_.size()); ++i)
       if (has_side_[i]) models[side_interval(i)] = model_of(side_interval(i));
     return models;
@@ -225,22 +227,12 @@ class TopologyBuilder {
     const Slice& sc = space_.slices[critical_slice_[k]].slice;
     const auto carried = [&](const Slice& from, const Slice& to) {
       for (int c = 0; c < component_count(from); ++c)
-        if (sample_clearance(from, c) - from.epsilon <= reach_ * gap ||
+        if (detail::sample_clearance(from, c) - from.epsilon <= reach_ * gap ||
             to.locate(from.free_components[c].sample) < 0)
           return false;
       return true;
     };
     return carried(s, sc) && carried(sc, s);
-  }
-
-  // How far a component's sample lies from its boundary; infinite with no boundary.
-  static double sample_clearance(const Slice& s, int component) {
-    const FreeComponent& c = s.free_components[component];
-    double d = std::numeric_limits<double>::infinity();
-    for (const auto& cycle : c.boundary)
-      for (const ContactPiece& piece : cycle)
-        d = std::min(d, distance_to_curve(piece.curve, c.sample));
-    return d;
   }
 
   // With at most one free component in the slices of the interval before critical
@@ -481,8 +473,8 @@ class TopologyBuilder {
         for (int x = 1; x < nb + na + nc; ++x) local.unite(0, x);
     } else {
       join_by_samples(sb, sa, sc, far_[2 * k], far_[2 * k + 1], local);
-      join_by_carrying(sb, sc, before, 0, C0, local);
-      join_by_carrying(sa, sc, after, B0, C0, local);
+      join_carried(carries_[2 * k], 0, C0, local);
+      join_carried(carries_[2 * k + 1], B0, C0, local);
     }
     // Components of one cell are one (they differ only after a reported match failure).
     for (int x = 0; x < nb; ++x)
@@ -582,52 +574,66 @@ class TopologyBuilder {
   // 5e-4 thick, shrank to a third within 7e-4 rad, off its own sample; stress seed 100167: a
   // lobe of 2e-7 merged through a pinch and left its sample behind). A component of the
   // critical slice has area, so it continues on both sides: each whose sample is not proved
-  // to stand for a free segment to side slice s is carried across (`carry`) and joined where it
+  // to stand for a free segment to side slice s is carried across (carry.hpp) and joined where it
   // lands. Elements numbered as in `transition`: s's from `base`, the critical slice's from
   // `c0`.
-  void join_by_carrying(const Slice& s, const Slice& sc, int interval, int base, int c0,
-                        UnionFind& local) {
-    const double motion = reach_ * std::fabs(wrap_angle(s.theta - sc.theta));
-    for (int c = 0; c < component_count(sc); ++c) {
-      const double clearance = sample_clearance(sc, c);
-      if (clearance - sc.epsilon > motion) continue;  // its sample rule holds
-      const int a = carry(sc, c, clearance, s, interval);
-      if (a < 0 || local.find(c0 + c) == local.find(base + a)) continue;
-      local.unite(c0 + c, base + a);
+  void join_carried(const std::vector<detail::CarriedSample>& carried, int base, int c0,
+                    UnionFind& local) {
+    for (const detail::CarriedSample& k : carried) {
+      if (k.landed < 0 || local.find(c0 + k.component) == local.find(base + k.landed)) continue;
+      local.unite(c0 + k.component, base + k.landed);
       ++topo_.checks.joins_by_carrying;
     }
   }
 
-  // Carries the sample of component c of slice `from` (its clearance given) to the orientation
-  // of slice `to` along free vertical segments: each step turns by half the sample's clearance
-  // less eps over the reach, so blocked space, which creeps by at most the reach per radian,
-  // cannot get there (see `clears`); within each slice the point moves to its component's
-  // sample, a free path there. Returns the component of `to` where it lands, or -1 when it
-  // leaves free space or the steps shrink below the angular tolerance or run out (a component
-  // shrinking to nothing at the critical orientation).
-  int carry(const Slice& from, int c, double clearance, const Slice& to, int interval) {
-    if (!carrier_) carrier_.emplace(&pair_);
-    const BoundaryModel* model = model_of(interval);
-    const double target = from.theta + wrap_angle(to.theta - from.theta);
-    Vec2 p = from.free_components[c].sample;
-    double theta = from.theta;
-    for (int step = 0; step < kMaxCarrySteps; ++step) {
-      const double turn = 0.5 * (clearance - from.epsilon) / reach_;
-      if (!(turn > pair_.tol.angular)) return -1;
-      const double next =
-          target > theta ? std::min(target, theta + turn) : std::max(target, theta - turn);
-      if (next == target) return to.locate(p);
-      bool evaluated = false;
-      const Slice slice = carrier_->slice(model, wrap_angle(next), evaluated);
-      ++topo_.checks.carry_slices;
-      topo_.checks.carry_slices_evaluated += evaluated ? 1 : 0;
-      const int d = slice.locate(p);
-      if (d < 0) return -1;
-      p = slice.free_components[d].sample;
-      clearance = sample_clearance(slice, d);
-      theta = next;
+  // The carries of every transition the counts do not decide, before the transitions join
+  // anything, in parallel: carries_[2k] from critical slice k to the side slice before it,
+  // [2k + 1] to the one after.
+  void carry_all() {
+    const int n = static_cast<int>(criticals_.size());
+    carries_.assign(2 * size_t(n), {});
+    std::vector<int> intervals;  // whose models the carries need
+    for (int i = 0; i < 2 * n; ++i) {
+      const int k = i / 2;
+      if (by_count_[k]) continue;
+      const Slice& sc = space_.slices.at(critical_slice_[k]).slice;
+      const Slice& s = side_of(i);
+      const double motion = reach_ * std::fabs(wrap_angle(s.theta - sc.theta));
+      for (int c = 0; c < component_count(sc); ++c) {
+        const double clearance = detail::sample_clearance(sc, c);
+        if (clearance - sc.epsilon > motion) continue;  // its sample rule holds
+        carries_[i].push_back({c, sc.free_components[c].sample, clearance});
+      }
+      if (!carries_[i].empty()) intervals.push_back(side_interval(i));
     }
-    return -1;
+    build_models(intervals);
+    std::vector<std::pair<int, int>> counts(carries_.size(), {0, 0});
+    detail::for_each_index_parallel<detail::SliceWorker>(
+        pair_, carries_.size(), options_.threads, [&](size_t i, detail::SliceWorker& w) {
+          if (carries_[i].empty()) return;
+          const int side = static_cast<int>(i);
+          const BoundaryModel* model = model_of(side_interval(side));
+          const auto slice_at = [&](double theta) {
+            bool evaluated = false;
+            Slice slice = w.slice(model, theta, evaluated);
+            counts[i].second += evaluated ? 1 : 0;
+            return slice;
+          };
+          counts[i].first =
+              detail::carry_samples(space_.slices.at(critical_slice_[side / 2]).slice, carries_[i],
+                                    side_of(side), reach_, pair_.tol.angular, slice_at);
+        });
+    for (const auto& [slices, evaluated] : counts) {
+      topo_.checks.carry_slices += slices;
+      topo_.checks.carry_slices_evaluated += evaluated;
+    }
+  }
+
+  // The slice at side 2k (before critical orientation k) or 2k + 1 (after): the last of the
+  // interval before, the first of the one after.
+  const Slice& side_of(int side) const {
+    const int n = static_cast<int>(criticals_.size()), k = side / 2;
+    return side % 2 == 0 ? *chains_[(k + n - 1) % n].back().slice : *chains_[k].front().slice;
   }
 
   int cell_of(const Link& link, int component) const {
@@ -717,8 +723,9 @@ class TopologyBuilder {
   std::vector<char> by_count_;  // per critical: joined by joins_follow_from_counts
   std::vector<char> far_;       // 2k, 2k + 1: that side's stored slice stands in (clears)
   double reach_ = moving_reach(pair_.moving);
-  std::optional<detail::SliceWorker> carrier_;  // carries samples across critical orientations
-  std::vector<std::vector<int>> stored_;        // per interval: its non-critical slices, by theta
+  std::vector<std::vector<detail::CarriedSample>>
+      carries_;                           // per side of each critical orientation
+  std::vector<std::vector<int>> stored_;  // per interval: its non-critical slices, by theta
   std::vector<int> critical_slice_, representative_;
   std::vector<Slice> sides_;          // 2k: before critical k, 2k + 1: after it
   std::vector<char> side_evaluated_;  // per side: evaluated from its interval's model

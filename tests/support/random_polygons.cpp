@@ -177,6 +177,18 @@ LoopVertices gear(const GearShape& g) {
   return loop;
 }
 
+std::string gear_in_ring_json(int teeth, double tip, double root, int ring_teeth, double ring_tip,
+                              double ring_root, double tolerance) {
+  const double pitch = kTwoPi / teeth, ring_pitch = kTwoPi / ring_teeth;
+  const LoopVertices g = gear({teeth, tip, root, 0.126 * pitch, 0.2625 * pitch, 0.0});
+  const LoopVertices ring = gear(
+      {ring_teeth, ring_tip, ring_root, 0.2625 * ring_pitch, 0.126 * ring_pitch, ring_pitch / 2});
+  std::string json = "{\"name\":\"gear in ring\",";
+  if (tolerance > 0.0) json += "\"tolerance\":" + std::to_string(tolerance) + ",";
+  return json + "\"moving\":{\"loops\":[" + loop_json(g) +
+         "]},\"fixed\":{\"enclosure\":true,\"loops\":[" + loop_json(ring) + "]}}";
+}
+
 double loop_area(const LoopVertices& loop) {
   double area = 0.0;
   const size_t n = loop.size();

@@ -92,6 +92,12 @@ struct GearShape {
   double phase = 0.0;
 };
 LoopVertices gear(const GearShape& shape);
+// The pair file's text of a gear of `teeth` about the origin (tips at `tip`, roots at `root`)
+// inside the opening of a ring gear of `ring_teeth` (tips at `ring_tip`, roots at
+// `ring_root`), both straight-flanked with the proportions of examples/drawings/gear-in-ring.dxf
+// (scripts/make-gear-drawing.py); `tolerance` 0 leaves the default.
+std::string gear_in_ring_json(int teeth, double tip, double root, int ring_teeth, double ring_tip,
+                              double ring_root, double tolerance = 0.0);
 
 // Signed area enclosed by a loop (positive counterclockwise), arcs included.
 double loop_area(const LoopVertices& loop);
