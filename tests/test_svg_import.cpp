@@ -118,6 +118,11 @@ TEST(SvgImport, InkscapeLayersInMillimetres) {
   EXPECT_EQ(relative.pair->fixed.box.lo.x, -40.0);
   EXPECT_EQ(relative.pair->fixed.box.hi.y, 30.0);  // the top wall, 10 mm down the page, 30 above 40
   EXPECT_EQ(classify(*relative.pair, {0, 0, 0.0}), Placement::free);
+  // Named by id, written as href and CSS write it.
+  DrawingImportOptions by_id;
+  by_id.moving_layer = "#layer2";
+  by_id.fixed_layer = "layer1";
+  EXPECT_TRUE(import(text, by_id).ok());
   // Without a viewBox the user unit is the px, and so are the coordinates.
   const Pair px = import_ok(svg(moving("<circle r=\"2\"/>")), {});
   EXPECT_EQ(px.units, "px");

@@ -720,7 +720,10 @@ class SvgReader {
 }  // namespace
 
 DrawingPairResult import_svg_pair(std::string_view svg_text, std::string_view source,
-                                  const DrawingImportOptions& options) {
+                                  const DrawingImportOptions& drawing_options) {
+  DrawingImportOptions options = drawing_options;
+  for (std::string* name : {&options.moving_layer, &options.fixed_layer})
+    if (name->size() > 1 && name->front() == '#') name->erase(0, 1);  // as href and CSS write ids
   drawing::DrawnParts parts;
   try {
     if (same_name(options.moving_layer, options.fixed_layer))
