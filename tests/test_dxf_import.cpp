@@ -6,7 +6,9 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <random>
 #include <sstream>
@@ -363,7 +365,7 @@ TEST(DxfImport, ErrorsNameTheLayerTheEntityAndItsLine) {
   one_layer.fixed_layer = "moving";
   expect_has(import_error(with_block(open).text(), one_layer), {"both on layer 'moving'"});
   expect_has(import_error(""), {"empty"});
-  expect_has(import_error("AutoCAD Binary DXF\r\n\x1a"), {"binary DXF"});
+  expect_has(import_error(std::string("AutoCAD Binary DXF\r\n\x1a\0", 22)), {"holds no groups"});
   expect_has(import_error("0\nSECTION\nxyz\n"), {"line 3: group code 'xyz' is not an integer"});
 }
 
@@ -456,6 +458,66 @@ TEST(DxfImport, BlocksAreDrawnWhereTheyAreInserted) {
   const std::string nested = import_error(with_blocks(
       {{"LOOP", {0, 0}, body(loop)}}, insert("moving", "LOOP", {0, 0}, 1, 1, 0) + frame_text));
   EXPECT_NE(nested.find("nested deeper than 8"), std::string::npos) << nested;
+}
+
+// The drawing as a binary DXF file writes it: the sentinel, then each group's code in two
+// bytes (one before R13, 255 then two for larger codes) and its value by the code's type
+// (only the codes the Drawing helper writes: text, reals, 16- and 32-bit integers).
+std::string binary(const std::string& ascii, bool wide_codes = true) {
+  std::string out("AutoCAD Binary DXF\r\n\x1a\0", 22);
+  std::istringstream in(ascii);
+  std::string code_line, value;
+  const auto bytes = [&](uint64_t v, int n) {
+    for (int k = 0; k < n; ++k) out += static_cast<char>((v >> (8 * k)) & 0xFF);
+  };
+  while (std::getline(in, code_line) && std::getline(in, value)) {
+    const int code = std::stoi(code_line);
+    if (wide_codes) {
+      bytes(static_cast<uint64_t>(code), 2);
+    } else if (code < 255) {
+      bytes(static_cast<uint64_t>(code), 1);
+    } else {
+      bytes(255, 1);
+      bytes(static_cast<uint64_t>(code), 2);
+    }
+    if (code <= 9) {
+      out += value;
+      out += '\0';
+    } else if (code >= 60 && code <= 79) {
+      bytes(static_cast<uint64_t>(std::stoi(value)), 2);
+    } else if (code >= 90 && code <= 99) {
+      bytes(static_cast<uint64_t>(std::stol(value)), 4);
+    } else {
+      bytes(std::bit_cast<uint64_t>(std::stod(value)), 8);
+    }
+  }
+  return out;
+}
+
+// A binary DXF file (as AutoCAD saves one on request) is read as its ASCII twin: the same pair
+// file to the last bit, with two-byte group codes and one-byte ones; cut short or mutated,
+// it is refused with a message.
+TEST(DxfImport, BinaryFilesAreReadAsTheirAsciiTwins) {
+  Drawing d;
+  d.lwpolyline("moving", {{-1, -1}, {1, -1, 0.3}, {1, 1}, {-1, 1}});
+  d.line("fixed", {5, 0}, {9, 0}).line("fixed", {9, 0}, {9, 3}).arc("fixed", {7, 3}, 2.0, 0, 180);
+  d.line("fixed", {5, 3}, {5, 0}).circle("fixed", {20, 0}, 1.0 / 3.0);
+  const std::string text = d.text();
+  const DrawingPairResult ascii = import(text);
+  ASSERT_TRUE(ascii.ok()) << ascii.error->message();
+  for (bool wide : {true, false}) {
+    const DrawingPairResult r = import(binary(text, wide));
+    ASSERT_TRUE(r.ok()) << r.error->message();
+    EXPECT_EQ(r.pair_json, ascii.pair_json) << (wide ? "two-byte codes" : "one-byte codes");
+  }
+  const std::string whole = binary(text);
+  EXPECT_NE(import_error(whole.substr(0, whole.size() / 2)).find("cut short"), std::string::npos);
+  testkit::expect_mutants_read_or_refused(
+      whole, 5000, [](const std::string& mutated) -> std::optional<std::string> {
+        const DrawingPairResult r = import(mutated);
+        if (r.ok()) return std::nullopt;
+        return r.error->message();
+      });
 }
 
 class DxfImportCli : public testkit::ScratchDirTest {

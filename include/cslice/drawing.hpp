@@ -1,9 +1,9 @@
 // CAD drawings as pair files (docs/dxf-import.md, docs/svg-import.md). The outlines of two
-// layers of an ASCII DXF drawing, or of two named elements of an SVG drawing, become the
-// moving and the fixed part: lines, circular and elliptical arcs, circles, polylines, splines
-// and Bezier curves (curves other than circular arcs as arcs within a hundredth of the
-// tolerance), blocks and reused elements where they are placed. Loose pieces are joined end to
-// end into loops.
+// layers of a DXF drawing (ASCII or binary), or of two named elements of an SVG drawing,
+// become the moving and the fixed part: lines, circular and elliptical arcs, circles,
+// polylines, splines and Bezier curves (curves other than circular arcs as arcs within a
+// hundredth of the tolerance), blocks and reused elements where they are placed. Loose pieces
+// are joined end to end into loops.
 #pragma once
 
 #include <optional>

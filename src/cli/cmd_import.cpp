@@ -75,12 +75,12 @@ void register_import(CLI::App& app) {
   auto opts = std::make_shared<ImportOptions>();
   CLI::App* cmd = app.add_subcommand(
       "import",
-      "Make a pair file from two layers of an ASCII DXF drawing (lines, arcs, circles, "
+      "Make a pair file from two layers of a DXF drawing, ASCII or binary (lines, arcs, circles, "
       "polylines with bulges, splines and ellipses as arcs, inserted blocks) or two named "
       "elements of an SVG drawing (paths, rectangles, circles, ellipses, polygons, reused "
       "elements; Bezier curves and elliptical arcs as arcs); loose pieces are joined end to end "
       "into loops (docs/dxf-import.md, docs/svg-import.md)");
-  cmd->add_option("drawing", opts->path, "DXF (ASCII) or SVG file")->required();
+  cmd->add_option("drawing", opts->path, "DXF (ASCII or binary) or SVG file")->required();
   cmd->add_option("-o,--output", opts->output, "Pair file to write (default: standard output)");
   cmd->add_option("--moving", opts->moving_layer,
                   "Layer (DXF) or element id or label (SVG) of the moving part (default: moving)");

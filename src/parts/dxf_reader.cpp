@@ -1,5 +1,6 @@
-// ASCII DXF drawings as pair files (docs/dxf-import.md). A DXF file is a list of groups, each
-// two lines: an integer code, then a value. We read the header's unit and the ENTITIES
+// DXF drawings as pair files (docs/dxf-import.md). A DXF file is a list of groups, each two
+// lines of an ASCII file, an integer code and a value (or, in a binary file, a code of one or
+// two bytes and a value of the type its code says). We read the header's unit and the ENTITIES
 // section, and of its entities those on the two chosen layers: LINE, ARC, CIRCLE, LWPOLYLINE
 // and POLYLINE (with its VERTEX entities), SPLINE and ELLIPSE (as arcs within a hundredth of the
 // tolerance), and the entities of the blocks INSERTs place.
@@ -9,9 +10,12 @@
 // 32 GB on 2e9, where bad input must get a message and exit status 2. The few entities a
 // part outline uses are short to read, and every value is checked as it is taken.
 #include <algorithm>
+#include <bit>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <deque>
 #include <functional>
 #include <map>
 #include <set>
@@ -51,11 +55,98 @@ std::string quoted(std::string_view s) {
   return "'" + std::string(s.substr(0, 40)) + (s.size() > 40 ? "...'" : "'");
 }
 
+// The type of a group's value in a binary DXF file, by its code (the DXF reference's table
+// of group code ranges).
+enum class BinaryValue { text, real, int16, int32, int64, boolean, chunk, unknown };
+BinaryValue binary_value_type(int code) {
+  const auto in = [code](int lo, int hi) { return code >= lo && code <= hi; };
+  if (in(0, 9) || in(100, 105) || in(300, 309) || in(320, 369) || in(390, 399) || in(410, 419) ||
+      in(430, 439) || in(470, 481) || code == 999 || in(1000, 1003) || in(1005, 1009))
+    return BinaryValue::text;
+  if (in(10, 59) || in(110, 149) || in(210, 239) || in(460, 469) || in(1010, 1059))
+    return BinaryValue::real;
+  if (in(60, 79) || in(170, 179) || in(270, 289) || in(370, 389) || in(400, 409) || in(1060, 1070))
+    return BinaryValue::int16;
+  if (in(90, 99) || in(420, 429) || in(440, 459) || code == 1071) return BinaryValue::int32;
+  if (in(160, 169)) return BinaryValue::int64;
+  if (in(290, 299)) return BinaryValue::boolean;
+  if (in(310, 319) || code == 1004) return BinaryValue::chunk;
+  return BinaryValue::unknown;
+}
+
+// The groups of a binary DXF file, each value written out as the ASCII file would hold it
+// (numbers to the last bit) into `values`, whose elements stay where they are. Group codes
+// take two bytes (R13 on) or one (R12, 255 then two for larger codes); a group's "line" is the
+// one it would have in the ASCII file, two lines a group.
+std::vector<Group> read_binary_groups(std::string_view data, std::deque<std::string>& values) {
+  size_t at = 22;  // "AutoCAD Binary DXF\r\n\x1a\0"
+  const bool wide_codes = data.size() >= at + 2 && data[at] == '\0' && data[at + 1] == '\0';
+  const auto take = [&](size_t n) {
+    if (data.size() - at < n)
+      throw DrawingError{"", "byte " + std::to_string(at) + ": the binary DXF file is cut short"};
+    const std::string_view bytes = data.substr(at, n);
+    at += n;
+    return bytes;
+  };
+  const auto little = [&](size_t n) {
+    uint64_t v = 0;
+    const std::string_view b = take(n);
+    for (size_t k = n; k-- > 0;) v = (v << 8) | static_cast<unsigned char>(b[k]);
+    return v;
+  };
+  std::vector<Group> groups;
+  while (at < data.size()) {
+    Group g;
+    g.line = 2 * static_cast<int>(groups.size()) + 1;
+    const size_t start = at;
+    g.code = static_cast<int>(wide_codes ? static_cast<int16_t>(little(2)) : little(1));
+    if (!wide_codes && g.code == 255) g.code = static_cast<int16_t>(little(2));
+    std::string& value = values.emplace_back();
+    switch (binary_value_type(g.code)) {
+      case BinaryValue::text: {
+        const size_t end = data.find('\0', at);
+        if (end == std::string_view::npos) take(data.size() - at + 1);  // cut short
+        value = std::string(trim(take(end - at)));
+        take(1);
+        break;
+      }
+      case BinaryValue::real: {
+        const double v = std::bit_cast<double>(little(8));
+        char buffer[32];
+        value.assign(buffer, std::to_chars(buffer, buffer + sizeof buffer, v).ptr);
+        break;
+      }
+      case BinaryValue::int16:
+        value = std::to_string(static_cast<int16_t>(little(2)));
+        break;
+      case BinaryValue::int32:
+        value = std::to_string(static_cast<int32_t>(little(4)));
+        break;
+      case BinaryValue::int64:
+        value = std::to_string(static_cast<int64_t>(little(8)));
+        break;
+      case BinaryValue::boolean:
+        value = std::to_string(little(1));
+        break;
+      case BinaryValue::chunk:
+        take(little(1));
+        break;  // binary data: nothing of an outline
+      case BinaryValue::unknown:
+        throw DrawingError{"", "byte " + std::to_string(start) + ": group code " +
+                                   std::to_string(g.code) + " has no type a binary DXF file knows"};
+    }
+    g.value = value;
+    groups.push_back(g);
+    if (g.code == 0 && value == "EOF") break;
+  }
+  if (groups.empty()) throw DrawingError{"", "the binary DXF file holds no groups"};
+  return groups;
+}
+
 // The groups of the text: a code line (an integer), then its value line.
-std::vector<Group> read_groups(std::string_view text) {
+std::vector<Group> read_groups(std::string_view text, std::deque<std::string>& binary_values) {
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // a UTF-8 byte order mark
-  if (text.substr(0, 18) == "AutoCAD Binary DXF")
-    throw DrawingError{"", "a binary DXF file; save the drawing as ASCII DXF"};
+  if (text.substr(0, 18) == "AutoCAD Binary DXF") return read_binary_groups(text, binary_values);
   std::vector<std::string_view> lines;
   for (size_t start = 0; start < text.size();) {
     size_t end = text.find('\n', start);
@@ -647,7 +738,8 @@ drawing::DrawnParts read_parts(std::string_view text, const DrawingImportOptions
     throw DrawingError{"", "the moving and the fixed part are both on layer '" +
                                options.moving_layer + "': name one layer for each"};
   Reader reader(options);
-  reader.read(read_groups(text));
+  std::deque<std::string> binary_values;  // a binary file's values, as text
+  reader.read(read_groups(text, binary_values));
   for (const auto& [layer, part, name] :
        {std::tuple{&reader.moving, "moving", options.moving_layer},
         std::tuple{&reader.fixed, "fixed", options.fixed_layer}})
