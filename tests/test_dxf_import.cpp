@@ -449,6 +449,16 @@ TEST(DxfImport, BlocksAreDrawnWhereTheyAreInserted) {
   EXPECT_NEAR(pair.moving.area, 6 * area, 1e-9);
   EXPECT_NEAR(pair.moving.box.hi.y, 9.5, 1e-12);   // columns along the turned x axis: y
   EXPECT_NEAR(pair.moving.box.lo.x, -6.0, 1e-12);  // rows along the turned y axis: -x
+  // Refused, and soon: an array giving a part more edges than a drawing may (250 x 250 pegs
+  // of 4 edges), and copies with no spacing, which lie on each other (60 x 60 of them).
+  const std::string huge = import_error(with_blocks(
+      {{"PEG", {0, 0}, blocks_text}}, insert("moving", "PEG", {0, 0}, 1, 1, 0) +
+                                          "  70\n250\n 71\n250\n 44\n2\n 45\n2\n" + frame_text));
+  EXPECT_NE(huge.find("250000 outline edges, more than the 200000"), std::string::npos) << huge;
+  const std::string piled = import_error(
+      with_blocks({{"PEG", {0, 0}, blocks_text}},
+                  insert("moving", "PEG", {0, 0}, 1, 1, 0) + "  70\n60\n 71\n60\n" + frame_text));
+  EXPECT_NE(piled.find("touch or cross"), std::string::npos) << piled;
   // Refused: a scale of 0, a block inserting itself.
   const std::string flat = import_error(with_blocks(
       {{"PEG", {0, 0}, blocks_text}}, insert("moving", "PEG", {0, 0}, 1, 0, 0) + frame_text));

@@ -89,6 +89,11 @@ std::string build_loops(const Layer& layer, double join, std::vector<DrawnLoop>&
 
 // ---- The pair (drawing_pair.cpp) ----------------------------------------------------------
 
+// Edges a drawing may give one part. A part outline of many thousand teeth or fitted arcs has
+// tens of thousands; a small drawing arraying a block a thousand by a thousand would give
+// millions, and every step after would take hours.
+inline constexpr size_t kMaxPartEdges = 200000;
+
 struct DrawnParts {
   Layer moving, fixed;  // each checked to have an outline
   std::string units;    // the pair's, or empty

@@ -107,9 +107,17 @@ DrawingPairResult pair_from_drawing(const DrawnParts& parts, std::string_view so
   std::vector<DrawnLoop> moving, fixed;
   for (const auto& [layer, loops, part, name] :
        {std::tuple{&parts.moving, &moving, "moving", &options.moving_layer},
-        std::tuple{&parts.fixed, &fixed, "fixed", &options.fixed_layer}})
+        std::tuple{&parts.fixed, &fixed, "fixed", &options.fixed_layer}}) {
     if (std::string problem = build_loops(*layer, join, *loops); !problem.empty())
       return failed(source, {part, std::string(what) + " '" + *name + "': " + problem});
+    size_t edges = 0;
+    for (const DrawnLoop& loop : *loops) edges += loop.circle ? 1 : loop.edges.size();
+    if (edges > kMaxPartEdges)
+      return failed(source,
+                    {part, std::string(what) + " '" + *name + "': " + std::to_string(edges) +
+                               " outline edges, more than the " + std::to_string(kMaxPartEdges) +
+                               " a drawing may give a part (a block arrayed too often?)"});
+  }
   const ToPair moving_to_pair{options.moving_origin, parts.y_down};
   const ToPair fixed_to_pair{options.fixed_origin, parts.y_down};
   std::string json = "{\n  \"name\": " + nlohmann::json(pair_name(source, options)).dump() + ",\n";

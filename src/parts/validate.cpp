@@ -204,17 +204,27 @@ std::vector<EdgeRef> sorted_edge_boxes(const Part& part, double eps) {
   return refs;
 }
 
-// Sweep over x: only edges whose boxes overlap are intersected. Keeps the smallest conflict.
+// Sweep over x: only edges whose boxes overlap are intersected. Keeps the smallest conflict,
+// looking on after the first only at pairs that could give a smaller one, and for at most a
+// budget of box pairs: a part of many coincident copies (a drawing's block arrayed with no
+// spacing) has a conflict in nearly every pair, and would otherwise take quadratic time to
+// find the smallest. Such a part gets the smallest of those the budget saw.
 std::optional<Conflict> find_conflict(const Part& part, double eps) {
   const std::vector<EdgeRef> refs = sorted_edge_boxes(part, eps);
+  const size_t budget = 16 * refs.size() + 1000000;  // box pairs looked at after a conflict
+  size_t after_conflict = 0;
   std::optional<Conflict> best;
   for (size_t i = 0; i < refs.size(); ++i) {
     for (size_t j = i + 1; j < refs.size() && refs[j].box.lo.x <= refs[i].box.hi.x; ++j) {
+      if (best && ++after_conflict > budget) return best;
       if (!refs[i].box.overlaps(refs[j].box)) continue;
       const bool i_first =
           std::tie(refs[i].loop, refs[i].edge) < std::tie(refs[j].loop, refs[j].edge);
       const EdgeRef& a = i_first ? refs[i] : refs[j];
       const EdgeRef& b = i_first ? refs[j] : refs[i];
+      if (best && std::tie(a.loop, a.edge, b.loop, b.edge) >=
+                      std::tie(best->loop_a, best->edge_a, best->loop_b, best->edge_b))
+        continue;  // no smaller conflict here
       auto c = check_edge_pair(part, a, b, eps);
       if (c && (!best || *c < *best)) best = std::move(c);
     }
