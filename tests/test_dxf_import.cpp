@@ -122,6 +122,13 @@ Pair import_ok(const std::string& text, DrawingImportOptions options = {}) {
   return r.ok() ? *r.pair : Pair{};
 }
 
+// Why the drawing is refused, or nothing when it is read (for the mutation tests).
+std::optional<std::string> refusal(const std::string& text) {
+  const DrawingPairResult r = import(text);
+  if (r.ok()) return std::nullopt;
+  return r.error->message();
+}
+
 std::string import_error(const std::string& text, DrawingImportOptions options = {}) {
   const DrawingPairResult r = import(text, options);
   EXPECT_FALSE(r.ok()) << "accepted:\n" << text;
@@ -377,12 +384,7 @@ TEST(DxfImport, MutatedDrawingsAreReadOrRefusedWithAMessage) {
   d.line("fixed", {5, 3}, {5, 0}).circle("fixed", {20, 0}, 1.0);
   const std::string base = d.text();
   ASSERT_TRUE(import(base).ok());
-  testkit::expect_mutants_read_or_refused(
-      base, 20000, [](const std::string& text) -> std::optional<std::string> {
-        const DrawingPairResult r = import(text);
-        if (r.ok()) return std::nullopt;
-        return r.error->message();
-      });
+  testkit::expect_mutants_read_or_refused(base, 20000, refusal);
 }
 
 // A drawing whose BLOCKS section defines `blocks` (name, base point, the entities' text as a
@@ -522,12 +524,7 @@ TEST(DxfImport, BinaryFilesAreReadAsTheirAsciiTwins) {
   }
   const std::string whole = binary(text);
   EXPECT_NE(import_error(whole.substr(0, whole.size() / 2)).find("cut short"), std::string::npos);
-  testkit::expect_mutants_read_or_refused(
-      whole, 5000, [](const std::string& mutated) -> std::optional<std::string> {
-        const DrawingPairResult r = import(mutated);
-        if (r.ok()) return std::nullopt;
-        return r.error->message();
-      });
+  testkit::expect_mutants_read_or_refused(whole, 5000, refusal);
 }
 
 class DxfImportCli : public testkit::ScratchDirTest {

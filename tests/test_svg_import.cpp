@@ -48,6 +48,13 @@ Pair import_ok(const std::string& text, DrawingImportOptions options = {}) {
   return r.ok() ? *r.pair : Pair{};
 }
 
+// Why the drawing is refused, or nothing when it is read (for the mutation tests).
+std::optional<std::string> refusal(const std::string& text) {
+  const DrawingPairResult r = import(text);
+  if (r.ok()) return std::nullopt;
+  return r.error->message();
+}
+
 std::string import_error(const std::string& text, DrawingImportOptions options = {}) {
   const DrawingPairResult r = import(text, options);
   EXPECT_FALSE(r.ok()) << "accepted:\n" << text;
@@ -383,12 +390,7 @@ TEST(SvgImport, MutatedDrawingsAreReadOrRefusedWithAMessage) {
           "<polyline points=\"30,0 34,0 34,3\"/><line x1=\"34\" y1=\"3\" x2=\"30\" y2=\"0\"/></g>",
           " width=\"100mm\" height=\"100mm\" viewBox=\"-50 -50 100 100\"");
   ASSERT_TRUE(import(base).ok()) << import(base).error->message();
-  testkit::expect_mutants_read_or_refused(
-      base, 20000, [](const std::string& text) -> std::optional<std::string> {
-        const DrawingPairResult r = import(text);
-        if (r.ok()) return std::nullopt;
-        return r.error->message();
-      });
+  testkit::expect_mutants_read_or_refused(base, 20000, refusal);
 }
 
 class SvgImportCli : public testkit::ScratchDirTest {

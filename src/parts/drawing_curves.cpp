@@ -4,7 +4,9 @@
 #include <array>
 #include <cmath>
 
+#include "cslice/tolerance.hpp"
 #include "parts/drawing_internal.hpp"
+#include "parts/validate.hpp"
 
 namespace cslice::drawing {
 
@@ -65,6 +67,28 @@ bool arcs_along(const std::function<Vec2(double)>& curve, const std::vector<doub
   }
   end = curve(breaks.back());
   return true;
+}
+
+std::string follow_curve(const std::function<Vec2(double)>& curve,
+                         const std::vector<double>& breaks, const Box& box,
+                         std::optional<double> tolerance, const Origin& origin,
+                         std::vector<Piece>& out) {
+  const double within =
+      kDxfCurveFitPerTolerance * tolerance.value_or(kDefaultRelativeTolerance * box.diagonal());
+  std::vector<ArcVertex> chain;
+  Vec2 end;
+  if (!(within > 0.0 && std::isfinite(within)) ||
+      !arcs_along(curve, breaks, within, kMaxCurvePieces, chain, end))
+    return "more than " + std::to_string(kMaxCurvePieces) +
+           " arcs would be needed to follow it within " + detail::format_number(within);
+  for (size_t i = 0; i < chain.size(); ++i) {
+    const Vec2 to = i + 1 < chain.size() ? chain[i + 1].p : end;
+    if (chain[i].p == to) continue;  // a cusp's repeated point: nothing to draw
+    if (!(is_finite(chain[i].p) && is_finite(to) && std::isfinite(chain[i].bulge)))
+      return "its points are beyond the range of numbers";
+    out.push_back({chain[i].p, to, chain[i].bulge, origin});
+  }
+  return "";
 }
 
 std::string check_nurbs(const Nurbs& n) {

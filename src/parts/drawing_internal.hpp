@@ -4,7 +4,9 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -53,7 +55,11 @@ struct Layer {
 inline constexpr std::pair<int, const char*> kInsunits[] = {{1, "in"}, {2, "ft"}, {4, "mm"},
                                                             {5, "cm"}, {6, "m"},  {13, "um"}};
 
-// ---- Curves approximated by arcs (dxf_curves.cpp) ---------------------------------------
+// Layers and elements are named ignoring case, as CAD programs match layer names (R12 files
+// store them upper case, whatever the user typed).
+bool same_name(std::string_view a, std::string_view b);
+
+// ---- Curves approximated by arcs (drawing_curves.cpp) -----------------------------------
 
 // A vertex of an approximating chain: the point and the bulge of the edge it starts.
 struct ArcVertex {
@@ -67,6 +73,18 @@ struct ArcVertex {
 // `max_pieces` would be needed.
 bool arcs_along(const std::function<Vec2(double)>& curve, const std::vector<double>& breaks,
                 double tolerance, size_t max_pieces, std::vector<ArcVertex>& out, Vec2& end);
+
+// Arcs one curve may need, at most.
+inline constexpr size_t kMaxCurvePieces = 100000;
+
+// The arcs within a hundredth of the pair's tolerance (`tolerance`, or the default one taken
+// on `box`, the curve's) of curve(u), u through `breaks`, into `out` as pieces of `origin`; a
+// cusp's repeated point draws nothing. Returns why it cannot (more than kMaxCurvePieces arcs,
+// points beyond the range of numbers), or an empty string.
+std::string follow_curve(const std::function<Vec2(double)>& curve,
+                         const std::vector<double>& breaks, const Box& box,
+                         std::optional<double> tolerance, const Origin& origin,
+                         std::vector<Piece>& out);
 
 // A NURBS curve as a DXF SPLINE gives it: degree, knots, control points, weights (empty:
 // all 1).
@@ -102,12 +120,11 @@ struct DrawnParts {
   bool y_down = false;
 };
 
-// The parts' loops as a pair file, read back by parse_pair. `what` names a part's source in
-// messages ("layer" or "element"); `source` is the file.
-DrawingPairResult pair_from_drawing(const DrawnParts& parts, std::string_view source,
-                                    const DrawingImportOptions& options, std::string_view what);
-// The error thrown while reading, as a result.
-DrawingPairResult failed(std::string_view source, const DrawingError& e);
+// The parts `read` gives (it throws DrawingError on bad input) as a pair file, read back by
+// parse_pair. `what` names a part's source in messages ("layer" or "element"); `source` is
+// the file.
+DrawingPairResult import_parts(std::string_view source, const DrawingImportOptions& options,
+                               std::string_view what, const std::function<DrawnParts()>& read);
 // `import` of the text of the file at `path`, or the error reading it.
 DrawingPairResult import_file(const std::string& path,
                               const std::function<DrawingPairResult(std::string_view)>& import);

@@ -85,8 +85,6 @@ void name_the_entities(InputError& error, const std::vector<DrawnLoop>& loops) {
   error.reason += ")";
 }
 
-}  // namespace
-
 DrawingPairResult failed(std::string_view source, const DrawingError& e) {
   DrawingPairResult result;
   InputError& error = result.error.emplace();
@@ -140,6 +138,26 @@ DrawingPairResult pair_from_drawing(const DrawnParts& parts, std::string_view so
   result.error = loaded.error;
   name_the_entities(*result.error, result.error->part == "moving" ? moving : fixed);
   return result;
+}
+
+}  // namespace
+
+bool same_name(std::string_view a, std::string_view b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](char x, char y) {
+    return std::tolower(static_cast<unsigned char>(x)) ==
+           std::tolower(static_cast<unsigned char>(y));
+  });
+}
+
+DrawingPairResult import_parts(std::string_view source, const DrawingImportOptions& options,
+                               std::string_view what, const std::function<DrawnParts()>& read) {
+  DrawnParts parts;
+  try {
+    parts = read();
+  } catch (const DrawingError& e) {
+    return failed(source, e);
+  }
+  return pair_from_drawing(parts, source, options, what);
 }
 
 DrawingPairResult import_file(const std::string& path,

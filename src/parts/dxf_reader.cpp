@@ -186,15 +186,6 @@ struct Entity {
   }
 };
 
-// Layer names match as CAD programs match them, ignoring case (R12 files store them upper
-// case, whatever the user typed).
-bool same_layer(std::string_view a, std::string_view b) {
-  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](char x, char y) {
-    return std::tolower(static_cast<unsigned char>(x)) ==
-           std::tolower(static_cast<unsigned char>(y));
-  });
-}
-
 // The drawing's two layers, filled entity by entity.
 class Reader {
  public:
@@ -326,11 +317,11 @@ class Reader {
   Layer* layer_of(const Entity& e, std::string& part) {
     const std::string name = layer_name(e);
     layers_seen.insert(name);
-    if (same_layer(name, options_.moving_layer)) {
+    if (drawing::same_name(name, options_.moving_layer)) {
       part = "moving";
       return &moving;
     }
-    if (same_layer(name, options_.fixed_layer)) {
+    if (drawing::same_name(name, options_.fixed_layer)) {
       part = "fixed";
       return &fixed;
     }
@@ -425,7 +416,7 @@ class Reader {
   // no cosine.
   void add_edge(Piece p, bool mirror, std::vector<Piece>& out) const {
     const Vec2 from = drawing_point(p.from, mirror), to = drawing_point(p.to, mirror);
-    if (!(finite(from) && finite(to) && std::isfinite(p.bulge)))
+    if (!(is_finite(from) && is_finite(to) && std::isfinite(p.bulge)))
       fail(p.origin.describe() + ": its ends are beyond the range of numbers");
     if (p.bulge == 0.0 || inserts_keep_circles()) {
       p.bulge = mirror != inserts_mirror() ? -p.bulge : p.bulge;
@@ -540,8 +531,6 @@ class Reader {
     return true;
   }
 
-  static bool finite(Vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
-
   void line(const Entity& e, const Origin& o, Layer& layer) {
     Piece p{
         {required(e, 10, o), required(e, 20, o)}, {required(e, 11, o), required(e, 21, o)}, 0.0, o};
@@ -583,21 +572,13 @@ class Reader {
     }
     loop.center = drawing_point(center, mirror);
     loop.radius = radius * inserts_scale();
-    if (!(finite(loop.center) && std::isfinite(loop.radius)))
+    if (!(is_finite(loop.center) && std::isfinite(loop.radius)))
       fail(o.describe() + ": its centre or radius is beyond the range of numbers");
     loop.origin = o.describe();
     layer.loops.push_back(loop);
   }
 
   // ---- Curves other than lines and arcs -----------------------------------------------
-  static constexpr size_t kMaxCurvePieces = 100000;
-
-  // A hundredth of the pair's tolerance, the default one taken on the curve's own box.
-  double fit_tolerance(const Box& box) const {
-    const double tolerance =
-        options_.tolerance.value_or(kDefaultRelativeTolerance * box.diagonal());
-    return kDxfCurveFitPerTolerance * tolerance;
-  }
 
   // The arcs along curve(u) (in the entity's coordinates, within `box`), u through `breaks`,
   // into `out`. They follow the curve as drawn, through the INSERTs placing it, so that the
@@ -608,21 +589,11 @@ class Reader {
     Box drawn;
     for (Vec2 corner : {box.lo, box.hi, Vec2{box.lo.x, box.hi.y}, Vec2{box.hi.x, box.lo.y}})
       drawn.add(drawing_point(corner, mirror));
-    const double tolerance = fit_tolerance(drawn);
-    std::vector<drawing::ArcVertex> chain;
-    Vec2 end;
-    if (!(tolerance > 0.0 && std::isfinite(tolerance)) ||
-        !drawing::arcs_along([&](double u) { return drawing_point(curve(u), mirror); }, breaks,
-                             tolerance, kMaxCurvePieces, chain, end))
-      fail(o.describe() + ": more than " + std::to_string(kMaxCurvePieces) +
-           " arcs would be needed to follow it within " + detail::format_number(tolerance));
-    for (size_t i = 0; i < chain.size(); ++i) {
-      const Vec2 to = i + 1 < chain.size() ? chain[i + 1].p : end;
-      if (chain[i].p == to) continue;  // a cusp's repeated point: nothing to draw
-      if (!(finite(chain[i].p) && finite(to) && std::isfinite(chain[i].bulge)))
-        fail(o.describe() + ": its points are beyond the range of numbers");
-      out.push_back({chain[i].p, to, chain[i].bulge, o});
-    }
+    if (const std::string problem =
+            drawing::follow_curve([&](double u) { return drawing_point(curve(u), mirror); }, breaks,
+                                  drawn, options_.tolerance, o, out);
+        !problem.empty())
+      fail(o.describe() + ": " + problem);
   }
 
   void spline(const Entity& e, const Origin& o, Layer& layer) {
@@ -734,7 +705,7 @@ std::string layer_list(const std::set<std::string>& layers) {
 
 // The two layers' outlines, each checked to be there.
 drawing::DrawnParts read_parts(std::string_view text, const DrawingImportOptions& options) {
-  if (same_layer(options.moving_layer, options.fixed_layer))
+  if (drawing::same_name(options.moving_layer, options.fixed_layer))
     throw DrawingError{"", "the moving and the fixed part are both on layer '" +
                                options.moving_layer + "': name one layer for each"};
   Reader reader(options);
@@ -758,13 +729,8 @@ drawing::DrawnParts read_parts(std::string_view text, const DrawingImportOptions
 
 DrawingPairResult import_dxf_pair(std::string_view dxf_text, std::string_view source,
                                   const DrawingImportOptions& options) {
-  drawing::DrawnParts parts;
-  try {
-    parts = read_parts(dxf_text, options);
-  } catch (const DrawingError& e) {
-    return drawing::failed(source, e);
-  }
-  return drawing::pair_from_drawing(parts, source, options, "layer");
+  return drawing::import_parts(source, options, "layer",
+                               [&] { return read_parts(dxf_text, options); });
 }
 
 DrawingPairResult load_dxf_pair(const std::string& path, const DrawingImportOptions& options) {

@@ -1,9 +1,11 @@
 // SVG path data and number lists (SVG 1.1, Paths: the grammar of the d attribute). Parsed to
 // the end or refused: a browser draws a path up to its first error, but a part outline that
 // stops there would be a different part, so the reader names the error instead.
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <initializer_list>
 
 #include "parts/svg_internal.hpp"
 
@@ -177,26 +179,18 @@ class PathBuilder {
     s.p[1] = to;
     add(s, to);
   }
-  void cubic(Vec2 c1, Vec2 c2, Vec2 to) {
+  void cubic(Vec2 c1, Vec2 c2, Vec2 to) { bezier(SvgSegment::Kind::cubic, {c1, c2, to}); }
+  void quadratic(Vec2 c1, Vec2 to) { bezier(SvgSegment::Kind::quadratic, {c1, to}); }
+  // From the pen through `points` (controls, then the end); S or T after it reflects its last
+  // control.
+  void bezier(SvgSegment::Kind kind, std::initializer_list<Vec2> points) {
     SvgSegment s;
-    s.kind = SvgSegment::Kind::cubic;
+    s.kind = kind;
     s.p[0] = pen_;
-    s.p[1] = c1;
-    s.p[2] = c2;
-    s.p[3] = to;
-    add(s, to);
-    control_ = c2;
-    reflect_ = 'C';
-  }
-  void quadratic(Vec2 c1, Vec2 to) {
-    SvgSegment s;
-    s.kind = SvgSegment::Kind::quadratic;
-    s.p[0] = pen_;
-    s.p[1] = c1;
-    s.p[2] = to;
-    add(s, to);
-    control_ = c1;
-    reflect_ = 'Q';
+    std::copy(points.begin(), points.end(), s.p + 1);
+    add(s, s.p[points.size()]);
+    control_ = s.p[points.size() - 1];
+    reflect_ = kind == SvgSegment::Kind::cubic ? 'C' : 'Q';
   }
 
   std::vector<SvgSubpath>& out_;

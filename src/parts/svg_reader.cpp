@@ -27,6 +27,7 @@ using drawing::DrawnLoop;
 using drawing::Layer;
 using drawing::Origin;
 using drawing::Piece;
+using drawing::same_name;
 using drawing::SvgSegment;
 using drawing::SvgSubpath;
 
@@ -55,13 +56,6 @@ Affine translation(double x, double y) {
 }
 Affine scaling(double x, double y) {
   return {x, 0.0, 0.0, y, 0.0, 0.0};
-}
-
-bool same_name(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) ==
-                  std::tolower(static_cast<unsigned char>(y));
-         });
 }
 
 std::string trim(std::string_view s) {
@@ -161,7 +155,6 @@ class SvgReader {
   static constexpr int kMaxDepth = 256;
   static constexpr int kMaxUses = 8;
   static constexpr long long kMaxElements = 1000000;
-  static constexpr size_t kMaxCurvePieces = 100000;
 
   int line_of(ptrdiff_t offset) const {
     if (offset < 0) return 0;
@@ -176,11 +169,15 @@ class SvgReader {
     return name;
   }
 
-  // "<path id="p3"> at line 12", as messages name an element.
-  std::string describe(pugi::xml_node n) const {
+  // "<path id="p3">", as messages name an element's tag.
+  static std::string tag(pugi::xml_node n) {
     std::string out = "<" + std::string(local_name(n));
     if (const char* id = n.attribute("id").value(); *id) out += " id=\"" + std::string(id) + "\"";
-    return out + "> at line " + std::to_string(line_of(n.offset_debug()));
+    return out + ">";
+  }
+  // "<path id="p3"> at line 12", as messages name an element.
+  std::string describe(pugi::xml_node n) const {
+    return tag(n) + " at line " + std::to_string(line_of(n.offset_debug()));
   }
 
   [[noreturn]] void fail(pugi::xml_node n, const Context& ctx, const std::string& reason) const {
@@ -318,19 +315,13 @@ class SvgReader {
     if (name == "use") return use(n, ctx, depth);
     if (ctx.part == Part::none || ctx.hidden || ctx.in_defs) return;
     Layer& layer = ctx.part == Part::moving ? parts_.moving : parts_.fixed;
-    const Origin origin{describe_entity(n), line_of(n.offset_debug()), ctx.placed};
+    const Origin origin{tag(n), line_of(n.offset_debug()), ctx.placed};
     Shapes shapes{*this, n, ctx, origin, layer};
     if (name == "path") shapes.path();
     if (name == "rect") shapes.rect();
     if (name == "circle" || name == "ellipse") shapes.ellipse(name == "circle");
     if (name == "line") shapes.line();
     if (name == "polyline" || name == "polygon") shapes.poly(name == "polygon");
-  }
-
-  // Origin's entity: "<path id="p3">" (Origin::describe adds " at line N").
-  std::string describe_entity(pugi::xml_node n) const {
-    const std::string d = describe(n);
-    return d.substr(0, d.rfind(" at line "));
   }
 
   void use(pugi::xml_node n, Context ctx, int depth) {
@@ -487,19 +478,24 @@ class SvgReader {
       for (int k = 0; k < 4; ++k) {
         segment(s, pen, corners[k] + out[k]);
         pen = corners[k] + out[k];
-        if (rx > 0.0 && ry > 0.0) {
-          SvgSegment arc;
-          arc.kind = SvgSegment::Kind::arc;
-          arc.p[0] = pen;
-          arc.p[1] = corners[k] + in[k];
-          arc.rx = rx;
-          arc.ry = ry;
-          arc.sweep = true;
-          s.segments.push_back(arc);
-        }
+        if (rx > 0.0 && ry > 0.0)
+          s.segments.push_back(turning_arc(pen, corners[k] + in[k], rx, ry));
         pen = corners[k] + in[k];
       }
       add(s);
+    }
+
+    // The arc of at most half a turn of the axis-aligned ellipse of radii rx, ry from `from` to
+    // `to`, turning as angles grow (SVG's sweep flag 1).
+    static SvgSegment turning_arc(Vec2 from, Vec2 to, double rx, double ry) {
+      SvgSegment arc;
+      arc.kind = SvgSegment::Kind::arc;
+      arc.p[0] = from;
+      arc.p[1] = to;
+      arc.rx = rx;
+      arc.ry = ry;
+      arc.sweep = true;
+      return arc;
     }
 
     static void segment(SvgSubpath& s, Vec2 from, Vec2 to) {
@@ -523,23 +519,16 @@ class SvgReader {
         loop.center = m(c);
         loop.radius = rx * m.circle_scale();
         loop.origin = origin.describe();
-        if (!(finite(loop.center) && std::isfinite(loop.radius) && loop.radius > 0.0))
+        if (!(is_finite(loop.center) && std::isfinite(loop.radius) && loop.radius > 0.0))
           fail("its centre or radius is beyond the range of numbers");
         layer.loops.push_back(loop);
         return;
       }
       SvgSubpath s;  // two half ellipses
       s.closed = true;
-      for (double side : {1.0, -1.0}) {
-        SvgSegment arc;
-        arc.kind = SvgSegment::Kind::arc;
-        arc.p[0] = c + Vec2{side * rx, 0.0};
-        arc.p[1] = c - Vec2{side * rx, 0.0};
-        arc.rx = rx;
-        arc.ry = ry;
-        arc.sweep = true;
-        s.segments.push_back(arc);
-      }
+      for (double side : {1.0, -1.0})
+        s.segments.push_back(
+            turning_arc(c + Vec2{side * rx, 0.0}, c - Vec2{side * rx, 0.0}, rx, ry));
       add(s);
     }
 
@@ -567,7 +556,7 @@ class SvgReader {
       std::vector<Piece> pieces;
       for (const SvgSegment& g : s.segments) drawn(g, pieces);
       for (const Piece& p : pieces)
-        if (!(finite(p.from) && finite(p.to) && std::isfinite(p.bulge)))
+        if (!(is_finite(p.from) && is_finite(p.to) && std::isfinite(p.bulge)))
           fail("a point beyond the range of numbers");
       if (pieces.empty()) return;
       if (!s.closed) {
@@ -667,23 +656,12 @@ class SvgReader {
       }
     }
 
-    // Arcs within a hundredth of the tolerance of curve(u), u through `breaks` (the default
-    // tolerance taken on the curve's box).
     void fitted(const std::function<Vec2(double)>& curve, const std::vector<double>& breaks,
                 const Box& box, std::vector<Piece>& out) const {
-      const double tolerance =
-          kDxfCurveFitPerTolerance *
-          reader.options_.tolerance.value_or(kDefaultRelativeTolerance * box.diagonal());
-      std::vector<drawing::ArcVertex> chain;
-      Vec2 end;
-      if (!(tolerance > 0.0 && std::isfinite(tolerance)) ||
-          !drawing::arcs_along(curve, breaks, tolerance, kMaxCurvePieces, chain, end))
-        fail("more than " + std::to_string(kMaxCurvePieces) +
-             " arcs would be needed to follow it within " + detail::format_number(tolerance));
-      for (size_t i = 0; i < chain.size(); ++i) {
-        const Vec2 to = i + 1 < chain.size() ? chain[i + 1].p : end;
-        if (chain[i].p != to) out.push_back({chain[i].p, to, chain[i].bulge, origin});
-      }
+      if (const std::string problem =
+              drawing::follow_curve(curve, breaks, box, reader.options_.tolerance, origin, out);
+          !problem.empty())
+        fail(problem);
     }
   };
 
@@ -705,8 +683,6 @@ class SvgReader {
     return out;
   }
 
-  static bool finite(Vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
-
   std::string_view text_;
   const DrawingImportOptions& options_;
   std::vector<size_t> line_starts_{0};
@@ -724,16 +700,12 @@ DrawingPairResult import_svg_pair(std::string_view svg_text, std::string_view so
   DrawingImportOptions options = drawing_options;
   for (std::string* name : {&options.moving_layer, &options.fixed_layer})
     if (name->size() > 1 && name->front() == '#') name->erase(0, 1);  // as href and CSS write ids
-  drawing::DrawnParts parts;
-  try {
+  return drawing::import_parts(source, options, "element", [&] {
     if (same_name(options.moving_layer, options.fixed_layer))
       throw DrawingError{"", "the moving and the fixed part are both named '" +
                                  options.moving_layer + "': name one element for each"};
-    parts = SvgReader(svg_text, options).read();
-  } catch (const DrawingError& e) {
-    return drawing::failed(source, e);
-  }
-  return drawing::pair_from_drawing(parts, source, options, "element");
+    return SvgReader(svg_text, options).read();
+  });
 }
 
 DrawingPairResult load_svg_pair(const std::string& path, const DrawingImportOptions& options) {

@@ -593,18 +593,20 @@ class TopologyBuilder {
     const int n = static_cast<int>(criticals_.size());
     carries_.assign(2 * size_t(n), {});
     std::vector<int> intervals;  // whose models the carries need
-    for (int i = 0; i < 2 * n; ++i) {
-      const int k = i / 2;
+    std::vector<double> clearances;
+    for (int k = 0; k < n; ++k) {
       if (by_count_[k]) continue;
       const Slice& sc = space_.slices.at(critical_slice_[k]).slice;
-      const Slice& s = side_of(i);
-      const double motion = reach_ * std::fabs(wrap_angle(s.theta - sc.theta));
-      for (int c = 0; c < component_count(sc); ++c) {
-        const double clearance = detail::sample_clearance(sc, c);
-        if (clearance - sc.epsilon > motion) continue;  // its sample rule holds
-        carries_[i].push_back({c, sc.free_components[c].sample, clearance});
+      clearances.clear();
+      for (int c = 0; c < component_count(sc); ++c)
+        clearances.push_back(detail::sample_clearance(sc, c));
+      for (const int i : {2 * k, 2 * k + 1}) {
+        const double motion = reach_ * std::fabs(wrap_angle(side_of(i).theta - sc.theta));
+        for (int c = 0; c < component_count(sc); ++c)
+          if (clearances[c] - sc.epsilon <= motion)  // else its sample rule holds
+            carries_[i].push_back({c, sc.free_components[c].sample, clearances[c]});
+        if (!carries_[i].empty()) intervals.push_back(side_interval(i));
       }
-      if (!carries_[i].empty()) intervals.push_back(side_interval(i));
     }
     build_models(intervals);
     std::vector<std::pair<int, int>> counts(carries_.size(), {0, 0});
