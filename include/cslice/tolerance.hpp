@@ -125,6 +125,12 @@ inline constexpr double kDxfCurveFitPerTolerance = 0.01;
 // x = 1e300 the clearance and the sweep to a goal behind a wall were the same double, and the
 // bare test certified the straight motion through the wall.
 inline constexpr double kPathRelativeRounding = 1e-12;
+// A contact segment is left out of a slice's arrangement only when proven blocked with this
+// many geometric epsilons to spare all along (src/slice/blocked_proof.cpp): farther from
+// free space than the arrangement ever joins points (eps) or copies split points between
+// curves running side by side (eps), with room for the round-off of the proof's few
+// operations (about 1e-15 of the size). Dimensionless, times Tolerances::geometric.
+inline constexpr double kProvenBlockedMarginPerGeometric = 8.0;
 
 struct Tolerances {
   // Length unit of the pair file (mm, in, ...). Base value everything scales with.

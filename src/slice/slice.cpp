@@ -15,6 +15,7 @@
 #include "cslice/classify.hpp"
 #include "cslice/slice.hpp"
 #include "slice/arrangement.hpp"
+#include "slice/blocked_proof.hpp"
 #include "slice/face_sample.hpp"
 #include "slice/small_sort.hpp"
 
@@ -49,6 +50,8 @@ struct SliceScratch {
   std::vector<Vec2> samples;
   std::vector<SectorSide> sides;
   FaceSampleScratch face_sample;
+  BlockedProof proof;
+  std::vector<char> proven;     // per contact segment: proven blocked, left out of the arrangement
   size_t segments_hint = 0;     // contact segments of the last slice: the next has about as many
   size_t graph_edges_hint = 0;  // the same for the contact graph's edges
 };
@@ -56,10 +59,11 @@ struct SliceScratch {
 class SliceBuilder {
  public:
   SliceBuilder(const Pair& pair, ContactMaker& contacts, std::optional<PlacementTester>& tester,
-               SliceScratch& scratch, double theta)
+               std::optional<PairRegions>& regions, SliceScratch& scratch, double theta)
       : pair_(pair),
         contacts_(contacts),
         tester_(tester),
+        regions_(regions),
         theta_(principal_angle(theta)),
         blocked_(scratch.blocked),
         samples_(scratch.samples),
@@ -76,8 +80,9 @@ class SliceBuilder {
     std::vector<int>& ids = scratch_.ids;
     curves.clear();
     ids.clear();
+    prove_blocked();
     for (const ContactSegment& s : slice_.contact_segments) {
-      if (s.is_point) continue;
+      if (s.is_point || scratch_.proven[size_t(s.id)]) continue;
       curves.push_back(s.curve);
       ids.push_back(s.id);
     }
@@ -93,6 +98,21 @@ class SliceBuilder {
   }
 
  private:
+  // Marks the contact segments proven blocked (slice/blocked_proof.hpp), where that is worth
+  // looking for; the pair's material regions are found on first use.
+  void prove_blocked() {
+    std::vector<char>& proven = scratch_.proven;
+    if (!worth_proving(pair_, slice_.contact_segments.size())) {
+      proven.assign(slice_.contact_segments.size(), 0);
+      return;
+    }
+    const double margin = kProvenBlockedMarginPerGeometric * pair_.tol.geometric;
+    if (!regions_)
+      regions_.emplace(PairRegions{material_regions(pair_.moving, margin),
+                                   material_regions(pair_.fixed, margin)});
+    scratch_.proof.find(slice_.contact_segments, *regions_, margin, proven);
+  }
+
   // The tester is built on first use: many slices settle every face by its labels.
   bool blocked_at(Vec2 p) {
     if (!tester_) tester_.emplace(pair_);
@@ -362,6 +382,7 @@ class SliceBuilder {
   const Pair& pair_;
   ContactMaker& contacts_;
   std::optional<PlacementTester>& tester_;
+  std::optional<PairRegions>& regions_;
   double theta_;
   Slice slice_;
   const Arrangement* arr_ = nullptr;
@@ -397,6 +418,7 @@ struct Slicer::State {
   const Pair& pair;
   ContactMaker contacts;
   std::optional<PlacementTester> tester;
+  std::optional<PairRegions> regions;
   SliceScratch scratch;
 };
 
@@ -407,7 +429,7 @@ Slicer& Slicer::operator=(Slicer&&) noexcept = default;
 
 Slice Slicer::slice(double theta) {
   State& s = *state_;
-  return SliceBuilder(s.pair, s.contacts, s.tester, s.scratch, theta).build();
+  return SliceBuilder(s.pair, s.contacts, s.tester, s.regions, s.scratch, theta).build();
 }
 
 // One-shot slices reuse this thread's working buffers. Fresh buffers for every call cost more
@@ -421,9 +443,10 @@ Slice compute_slice(const Pair& pair, double theta) {
   thread_local SliceScratch scratch;
   ContactMaker contacts(pair);
   std::optional<PlacementTester> tester;
+  std::optional<PairRegions> regions;
   // The hints size the returned slice's vectors after the last slice of the same pair.
   scratch.segments_hint = scratch.graph_edges_hint = 0;
-  Slice slice = SliceBuilder(pair, contacts, tester, scratch, theta).build();
+  Slice slice = SliceBuilder(pair, contacts, tester, regions, scratch, theta).build();
   if (slice.contact_segments.size() > kKeptScratchSegments) scratch = SliceScratch{};
   return slice;
 }

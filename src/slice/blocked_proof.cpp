@@ -1,0 +1,250 @@
+// Contact segments proven blocked (see blocked_proof.hpp).
+#include "slice/blocked_proof.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+namespace cslice {
+namespace {
+
+std::atomic<BlockedProofMode> g_mode{BlockedProofMode::automatic};
+
+// Below this many contact segments per feature the proof costs more than it saves (measured on
+// the rough stars, one-shot slices: at 1.8 per feature 28% slower, at 4 18% faster, at 14.5
+// 60% faster; docs/performance.md, sixteenth session).
+constexpr size_t kSegmentsPerFeatureWorthProving = 3;
+
+// Narrows [lo, hi] (parameters along a target line, 0 and 1 at its ends) to where a value
+// running linearly from v0 to v1 lies strictly between a and b; false when nothing is left.
+// `whole` stays true while every constraint so far holds at both ends, and so (the slab
+// being convex) all along the target.
+bool narrow(double v0, double v1, double a, double b, double& lo, double& hi, bool& whole) {
+  if (v0 > a && v0 < b && v1 > a && v1 < b) return true;
+  whole = false;
+  if ((v0 <= a && v1 <= a) || (v0 >= b && v1 >= b)) return false;
+  const double dv = v1 - v0;  // not 0: the ends lie on different sides of a or of b
+  double ta = (a - v0) / dv, tb = (b - v0) / dv;
+  if (dv < 0.0) std::swap(ta, tb);
+  lo = std::max(lo, ta);
+  hi = std::min(hi, tb);
+  return lo < hi;
+}
+
+// Whether the open spans together cover [0, 1].
+bool covers_unit(std::vector<BlockedProof::Span>& spans) {
+  std::sort(spans.begin(), spans.end(),
+            [](const BlockedProof::Span& a, const BlockedProof::Span& b) { return a.lo < b.lo; });
+  double reach = 0.0;  // [0, reach) is covered, reach itself not yet
+  for (const BlockedProof::Span& s : spans) {
+    if (!(s.lo < reach)) return false;
+    reach = std::max(reach, s.hi);
+    if (reach > 1.0) return true;
+  }
+  return false;
+}
+
+bool is_line_target(const ContactSegment& s) {
+  return !s.is_point && s.curve.is_segment();
+}
+
+}  // namespace
+
+bool worth_proving(const Pair& pair, size_t contact_segments) {
+  switch (g_mode.load(std::memory_order_relaxed)) {
+    case BlockedProofMode::always:
+      return true;
+    case BlockedProofMode::never:
+      return false;
+    case BlockedProofMode::automatic:
+      break;
+  }
+  return contact_segments > kSegmentsPerFeatureWorthProving *
+                                size_t(pair.moving.feature_count() + pair.fixed.feature_count());
+}
+
+void set_blocked_proof_mode(BlockedProofMode mode) {
+  g_mode.store(mode);
+}
+BlockedProofMode blocked_proof_mode() {
+  return g_mode.load();
+}
+
+void BlockedProof::find(const std::vector<ContactSegment>& segments, const PairRegions& regions,
+                        double margin, std::vector<char>& proven) {
+  proven.assign(segments.size(), 0);
+  add_slabs(segments, regions, margin);
+  if (slabs_.empty()) return;
+  index_slabs(segments);
+  order_targets(segments);
+  stamp_.assign(slabs_.size(), -1);
+  hint_ = -1;
+  for (int id : targets_)
+    if (covered(segments[size_t(id)].curve, id, margin)) proven[size_t(id)] = 1;
+}
+
+// One slab per vertex/segment or segment/vertex contact segment whose segment has a region
+// deeper than twice the margin. A slab's frame is its contact segment's: the segment (fixed
+// for vertex/segment, moving for segment/vertex) moved by a translation, or by a turn through
+// theta + pi, keeps its start, its direction and its material on the left (the blocked side).
+void BlockedProof::add_slabs(const std::vector<ContactSegment>& segments,
+                             const PairRegions& regions, double margin) {
+  slabs_.clear();
+  slab_boxes_.clear();
+  for (const ContactSegment& s : segments) {
+    if (!is_line_target(s)) continue;
+    const MaterialRegion* region =
+        s.kind == ContactKind::vertex_segment   ? &regions.fixed[size_t(s.fixed_feature)]
+        : s.kind == ContactKind::segment_vertex ? &regions.moving[size_t(s.moving_feature)]
+                                                : nullptr;
+    if (!region || region->depth <= 2.0 * margin) continue;
+    const Vec2 d = s.curve.to - s.curve.from;
+    const double length = cslice::length(d);
+    if (!(length > 0.0)) continue;
+    const Vec2 along = d * (1.0 / length);
+    const Slab slab{s.curve.from,     along,         perp_left(along),
+                    length,           region->depth, region->start_side,
+                    region->end_side, s.id};
+    // Its corners: its ends, and where the corner bisectors reach its depth (past the apex
+    // when the bisectors meet first: the box still holds the slab).
+    auto world = [&](Vec2 v) { return v.x * along + v.y * slab.across; };
+    const Vec2 to = s.curve.to;
+    Box box;
+    box.add(slab.from);
+    box.add(to);
+    box.add(slab.from + world(slab.start_side * (slab.depth / slab.start_side.y)));
+    box.add(to + world(slab.end_side * (slab.depth / slab.end_side.y)));
+    slabs_.push_back(slab);
+    slab_boxes_.push_back(box);
+  }
+}
+
+// A uniform grid of cells about as wide as the average slab, each listing the slabs whose
+// boxes overlap it.
+void BlockedProof::index_slabs(const std::vector<ContactSegment>& segments) {
+  Box all;
+  double extent = 0.0;
+  for (const Box& b : slab_boxes_) {
+    all.add(b);
+    extent += 0.5 * (b.hi.x - b.lo.x + b.hi.y - b.lo.y);
+  }
+  for (const ContactSegment& s : segments)
+    if (is_line_target(s)) {
+      all.add(s.curve.from);
+      all.add(s.curve.to);
+    }
+  const double n = double(slabs_.size());
+  const double w = all.hi.x - all.lo.x, h = all.hi.y - all.lo.y;
+  // At least as wide as a quarter of the slabs' number of cells would fill the whole box.
+  cell_ = std::max({extent / n, std::sqrt(w * h / (4.0 * n)), 1e-300});
+  columns_ = int(std::min(w / cell_, 4.0 * n)) + 1;
+  rows_ = int(std::min(h / cell_, 4.0 * n)) + 1;
+  origin_ = all.lo;
+  auto cells = [&](const Box& b, int& x0, int& x1, int& y0, int& y1) {
+    x0 = std::clamp(int((b.lo.x - origin_.x) / cell_), 0, columns_ - 1);
+    x1 = std::clamp(int((b.hi.x - origin_.x) / cell_), 0, columns_ - 1);
+    y0 = std::clamp(int((b.lo.y - origin_.y) / cell_), 0, rows_ - 1);
+    y1 = std::clamp(int((b.hi.y - origin_.y) / cell_), 0, rows_ - 1);
+  };
+  cell_start_.assign(size_t(columns_) * size_t(rows_) + 1, 0);
+  for (const Box& b : slab_boxes_) {
+    int x0, x1, y0, y1;
+    cells(b, x0, x1, y0, y1);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) ++cell_start_[size_t(y) * size_t(columns_) + size_t(x) + 1];
+  }
+  for (size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
+  cell_slabs_.resize(size_t(cell_start_.back()));
+  cell_boxes_.resize(size_t(cell_start_.back()));
+  fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
+  for (size_t k = 0; k < slabs_.size(); ++k) {
+    int x0, x1, y0, y1;
+    cells(slab_boxes_[k], x0, x1, y0, y1);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) {
+        const size_t at = size_t(fill_[size_t(y) * size_t(columns_) + size_t(x)]++);
+        cell_slabs_[at] = int(k);
+        cell_boxes_[at] = slab_boxes_[k];
+      }
+  }
+}
+
+// The line targets by the cell of their midpoint, rows walked back and forth: neighbours
+// follow each other, and the slab that covered one is tried first on the next.
+void BlockedProof::order_targets(const std::vector<ContactSegment>& segments) {
+  auto cell_of = [&](const Curve& c) {
+    const Vec2 m = 0.5 * (c.from + c.to);
+    const int x = std::clamp(int((m.x - origin_.x) / cell_), 0, columns_ - 1);
+    const int y = std::clamp(int((m.y - origin_.y) / cell_), 0, rows_ - 1);
+    return size_t(y) * size_t(columns_) + size_t(y % 2 == 0 ? x : columns_ - 1 - x);
+  };
+  target_start_.assign(size_t(columns_) * size_t(rows_) + 1, 0);
+  for (const ContactSegment& s : segments)
+    if (is_line_target(s)) ++target_start_[cell_of(s.curve) + 1];
+  for (size_t c = 1; c < target_start_.size(); ++c) target_start_[c] += target_start_[c - 1];
+  targets_.resize(size_t(target_start_.back()));
+  for (const ContactSegment& s : segments)
+    if (is_line_target(s)) targets_[size_t(target_start_[cell_of(s.curve)]++)] = s.id;
+}
+
+namespace {
+
+// Where the target (ends p0, p1) lies inside the slab (frame from, along, across; corner
+// sides start_side, end_side; depth less margin): false when nowhere, else its open span,
+// `whole` when end to end. The corner sides need no margin (material_regions.hpp).
+template <class Slab>
+bool inside(const Slab& s, Vec2 p0, Vec2 p1, double margin, BlockedProof::Span& span, bool& whole) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const Vec2 r0 = p0 - s.from, r1 = p1 - s.from;
+  const Vec2 q0{dot(r0, s.along), dot(r0, s.across)}, q1{dot(r1, s.along), dot(r1, s.across)};
+  span = {-inf, inf};
+  whole = true;
+  if (!narrow(q0.y, q1.y, margin, s.depth - margin, span.lo, span.hi, whole)) return false;
+  if (!narrow(cross(s.start_side, q0), cross(s.start_side, q1), -inf, 0.0, span.lo, span.hi, whole))
+    return false;
+  const Vec2 end{s.length, 0.0};
+  return narrow(cross(s.end_side, q0 - end), cross(s.end_side, q1 - end), 0.0, inf, span.lo,
+                span.hi, whole);
+}
+
+}  // namespace
+
+// Whether the target is covered end to end by the slabs of other contact segments. One slab
+// usually covers it whole; else the spans of all slabs near it are swept in order.
+bool BlockedProof::covered(const Curve& target, int id, double margin) {
+  const Vec2 p0 = target.from, p1 = target.to;
+  Span span;
+  bool whole = false;
+  if (hint_ >= 0 && slabs_[size_t(hint_)].segment != id &&
+      inside(slabs_[size_t(hint_)], p0, p1, margin, span, whole) && whole)
+    return true;
+  Box b;
+  b.add(p0);
+  b.add(p1);
+  const int x0 = std::clamp(int((b.lo.x - origin_.x) / cell_), 0, columns_ - 1);
+  const int x1 = std::clamp(int((b.hi.x - origin_.x) / cell_), 0, columns_ - 1);
+  const int y0 = std::clamp(int((b.lo.y - origin_.y) / cell_), 0, rows_ - 1);
+  const int y1 = std::clamp(int((b.hi.y - origin_.y) / cell_), 0, rows_ - 1);
+  spans_.clear();
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      const size_t cell = size_t(y) * size_t(columns_) + size_t(x);
+      for (int k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
+        if (!cell_boxes_[size_t(k)].overlaps(b)) continue;
+        const int j = cell_slabs_[size_t(k)];
+        if (stamp_[size_t(j)] == id) continue;  // met in an earlier cell
+        stamp_[size_t(j)] = id;
+        const Slab& s = slabs_[size_t(j)];
+        if (s.segment == id || !inside(s, p0, p1, margin, span, whole)) continue;
+        if (whole) {
+          hint_ = j;
+          return true;
+        }
+        spans_.push_back(span);
+      }
+    }
+  return covers_unit(spans_);
+}
+
+}  // namespace cslice

@@ -1,0 +1,81 @@
+// Contact segments proven to lie in blocked space, left out of the arrangement.
+//
+// A moving vertex strictly inside the fixed material, or a fixed vertex strictly inside the
+// moving material, makes the parts overlap. Each part's straight edges carry a region of
+// material (parts/material_regions.hpp). A vertex/segment or segment/vertex contact segment
+// runs along the translations where its vertex touches its segment; swept to its blocked
+// side through that segment's region, it becomes a slab of translations where the vertex
+// lies inside the region, more than `margin` from the other part's boundary below the slab's
+// depth less margin: blocked space with that margin. A line contact segment covered end to
+// end by other segments' slabs lies in blocked space with the margin all along, so leaving it
+// out of the arrangement only merges blocked faces: no free point, and no piece of the free
+// space's boundary, lies within the margin of it. It stays in the slice's contact segments.
+//
+// Where contact segments greatly outnumber features (rough contours, whose contact segments
+// cross in a band of shallow overlap along the boundary of the free space) most of them are
+// proven blocked this way, and the arrangement shrinks by as much; elsewhere few are, and
+// the slice does not look (worth_proving).
+#pragma once
+
+#include <vector>
+
+#include "cslice/slice.hpp"
+#include "parts/material_regions.hpp"
+
+namespace cslice {
+
+// Whether the slice looks for contact segments proven blocked: when there are more than three
+// contact segments per feature of the pair (see docs/performance.md, sixteenth session).
+bool worth_proving(const Pair& pair, size_t contact_segments);
+
+// For tests: look always, never, or when worth_proving says (the default). Process-wide.
+enum class BlockedProofMode { automatic, always, never };
+void set_blocked_proof_mode(BlockedProofMode mode);
+BlockedProofMode blocked_proof_mode();
+
+// The material regions of both parts of a pair, found once per pair.
+struct PairRegions {
+  std::vector<MaterialRegion> moving, fixed;
+};
+
+// Finds the contact segments proven blocked, one slice after another in the same buffers.
+class BlockedProof {
+ public:
+  // proven[id] = 1 for every contact segment (indexed by id) covered by other segments'
+  // slabs; 0 for the others.
+  void find(const std::vector<ContactSegment>& segments, const PairRegions& regions, double margin,
+            std::vector<char>& proven);
+
+  struct Span {  // open, along a target: 0 and 1 at its ends
+    double lo, hi;
+  };
+
+ private:
+  struct Slab {
+    Vec2 from, along, across;  // along: unit direction; across: unit normal to its left
+    double length, depth;
+    Vec2 start_side, end_side;  // the region's corner bisectors, as in MaterialRegion
+    int segment;
+  };
+  void add_slabs(const std::vector<ContactSegment>& segments, const PairRegions& regions,
+                 double margin);
+  void index_slabs(const std::vector<ContactSegment>& segments);
+  void order_targets(const std::vector<ContactSegment>& segments);
+  bool covered(const Curve& target, int id, double margin);
+
+  std::vector<Slab> slabs_;
+  std::vector<Box> slab_boxes_;
+  // Uniform grid over the slabs: the slabs overlapping cell c are
+  // cell_slabs_[cell_start_[c] .. cell_start_[c + 1]), with their boxes alongside.
+  std::vector<int> cell_start_, cell_slabs_, fill_;
+  std::vector<Box> cell_boxes_;
+  std::vector<int> stamp_;                   // per slab: the last target that tested it
+  std::vector<int> target_start_, targets_;  // line targets, by the cell of their midpoint
+  std::vector<Span> spans_;
+  Vec2 origin_;
+  double cell_ = 1.0;
+  int columns_ = 0, rows_ = 0;
+  int hint_ = -1;  // the slab that covered the last target covered by one slab
+};
+
+}  // namespace cslice

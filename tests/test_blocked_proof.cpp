@@ -1,0 +1,239 @@
+// Contact segments proven blocked and left out of the arrangement (slice/blocked_proof.hpp):
+// the material regions they rest on lie inside the material with the margin to spare, every
+// segment proven blocked is blocked by the direct placement test, and slices with the proof
+// give the same free space, realizable segments and contact graph as slices without.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "cslice/classify.hpp"
+#include "cslice/slice.hpp"
+#include "parts/loop_queries.hpp"
+#include "parts/material_regions.hpp"
+#include "slice/blocked_proof.hpp"
+#include "support/designed_pairs.hpp"
+#include "support/random_parts.hpp"
+#include "support/random_polygons.hpp"
+
+using namespace cslice;
+
+namespace {
+
+Pair parse(const std::string& json) {
+  LoadResult r = parse_pair(json, "test");
+  if (!r.ok()) throw std::runtime_error(r.error->message());
+  return std::move(*r.pair);
+}
+
+// A rough lobed star pair (the benchmarks' rough stars), n vertices per part.
+Pair rough_star_pair(int n, unsigned seed) {
+  for (;; ++seed) {
+    std::mt19937 rng(seed);
+    const testkit::StarPairLoops loops = testkit::lobed_star_pair(rng, n, 0.3 * kTwoPi / n, 0.0);
+    LoadResult r =
+        parse_pair(testkit::pair_json("star", {loops.moving}, {loops.fixed}), "rough star");
+    if (r.ok()) return std::move(*r.pair);
+  }
+}
+
+// Restores the automatic mode when a test ends, however it ends.
+struct ModeGuard {
+  ~ModeGuard() { set_blocked_proof_mode(BlockedProofMode::automatic); }
+};
+
+Slice slice_with(const Pair& pair, double theta, BlockedProofMode mode) {
+  set_blocked_proof_mode(mode);
+  Slice s = compute_slice(pair, theta);
+  set_blocked_proof_mode(BlockedProofMode::automatic);
+  return s;
+}
+
+// The contact segments proven blocked at theta, found as the slice finds them.
+std::vector<char> proven_at(const Pair& pair, double theta) {
+  const double margin = kProvenBlockedMarginPerGeometric * pair.tol.geometric;
+  const PairRegions regions{material_regions(pair.moving, margin),
+                            material_regions(pair.fixed, margin)};
+  BlockedProof proof;
+  std::vector<char> proven;
+  proof.find(contact_segments(pair, theta), regions, margin, proven);
+  return proven;
+}
+
+const MaterialRegion& region_of_edge(const Part& part, const std::vector<MaterialRegion>& r,
+                                     int loop, int edge) {
+  for (size_t f = 0; f < part.features.size(); ++f)
+    if (part.features[f].kind == FeatureKind::segment && part.features[f].loop == loop &&
+        part.features[f].index == edge)
+      return r[f];
+  throw std::runtime_error("no such edge");
+}
+
+}  // namespace
+
+// A square's regions are the triangles under its centre, as deep as twice the side (no other
+// edge enters them); a long thin rectangle's long edges reach only as deep as the other long
+// edge, its short ones to the cap.
+TEST(MaterialRegions, SquareAndThinRectangle) {
+  const Pair pair = parse(
+      R"({"moving": {"loops": [[[0,0],[2,0],[2,2],[0,2]]]},
+          "fixed": {"loops": [[[0,0],[10,0],[10,1],[0,1]]]}})");
+  const double margin = 1e-9;
+  const std::vector<MaterialRegion> square = material_regions(pair.moving, margin);
+  const double h = std::sqrt(0.5);
+  for (int e = 0; e < 4; ++e) {
+    const MaterialRegion& r = region_of_edge(pair.moving, square, 0, e);
+    EXPECT_NEAR(r.depth, 4.0, 1e-12) << "edge " << e;
+    EXPECT_NEAR(r.start_side.x, h, 1e-12);
+    EXPECT_NEAR(r.start_side.y, h, 1e-12);
+    EXPECT_NEAR(r.end_side.x, -h, 1e-12);
+    EXPECT_NEAR(r.end_side.y, h, 1e-12);
+  }
+  const std::vector<MaterialRegion> thin = material_regions(pair.fixed, margin);
+  EXPECT_NEAR(region_of_edge(pair.fixed, thin, 0, 0).depth, 1.0, 1e-12);
+  EXPECT_NEAR(region_of_edge(pair.fixed, thin, 0, 2).depth, 1.0, 1e-12);
+  EXPECT_NEAR(region_of_edge(pair.fixed, thin, 0, 1).depth, 2.0, 1e-12);
+  // Vertices have none.
+  for (size_t f = 0; f < pair.fixed.features.size(); ++f)
+    if (pair.fixed.features[f].kind == FeatureKind::vertex) {
+      EXPECT_EQ(thin[f].depth, 0.0);
+    }
+}
+
+// Points of a region lower than its depth less the margin lie inside the material, farther
+// than the margin from its boundary: random rough stars (reflex and convex corners), holes,
+// and a comb's enclosure-like pockets from the random pairs.
+TEST(MaterialRegions, RegionsLieInsideTheMaterialWithTheMargin) {
+  std::mt19937 rng(7);
+  std::vector<Pair> pairs;
+  for (int n : {12, 40, 100}) pairs.push_back(rough_star_pair(n, 100 + unsigned(n)));
+  for (int i = 0; i < 12; ++i)
+    pairs.push_back(testkit::random_pair(rng, 5 + i, 6 + i, i % 2 == 0).pair);
+  int tested = 0;
+  for (const Pair& pair : pairs)
+    for (const Part* part : {&pair.moving, &pair.fixed}) {
+      const double margin = 1e-3 * pair.tol.size;
+      const std::vector<MaterialRegion> regions = material_regions(*part, margin);
+      std::vector<Curve> boundary;
+      for (const Loop& l : part->loops)
+        boundary.insert(boundary.end(), l.edges.begin(), l.edges.end());
+      for (size_t f = 0; f < part->features.size(); ++f) {
+        const MaterialRegion& r = regions[f];
+        if (r.depth <= 2.0 * margin) continue;
+        const Feature& feature = part->features[f];
+        const Curve& e = part->loops[size_t(feature.loop)].edges[size_t(feature.index)];
+        const Vec2 along = normalized(e.to - e.from), across = perp_left(along);
+        const double length = distance(e.from, e.to);
+        std::uniform_real_distribution<double> y(margin, r.depth - margin);
+        std::uniform_real_distribution<double> x(-r.depth * 4.0, length + r.depth * 4.0);
+        for (int k = 0, found = 0; k < 400 && found < 20; ++k) {
+          const Vec2 q{x(rng), y(rng)};
+          if (!(cross(r.start_side, q) < 0.0 && cross(r.end_side, q - Vec2{length, 0.0}) > 0.0))
+            continue;
+          ++found;
+          ++tested;
+          const Vec2 p = e.from + q.x * along + q.y * across;
+          int inside = 0;
+          for (const Loop& l : part->loops) inside += loop_encloses(l.edges, p) ? 1 : 0;
+          const bool material = (inside % 2 == 1) != part->enclosure;
+          ASSERT_TRUE(material) << "edge " << f << " at (" << q.x << ", " << q.y << ")";
+          ASSERT_GT(distance_to_curves(boundary, p), margin) << "edge " << f;
+        }
+      }
+    }
+  EXPECT_GT(tested, 5000);
+}
+
+// Every contact segment proven blocked is blocked all along by the direct placement test,
+// and so are its points moved by the margin (less a hair) to either side.
+TEST(BlockedProof, ProvenSegmentsAreBlocked) {
+  std::vector<Pair> pairs;
+  for (int n : {30, 60, 100}) pairs.push_back(rough_star_pair(n, 200 + unsigned(n)));
+  int proven_count = 0;
+  for (const Pair& pair : pairs) {
+    PlacementTester tester(pair);
+    const double margin = kProvenBlockedMarginPerGeometric * pair.tol.geometric;
+    for (double theta : {0.0, 0.7, 2.1, 4.0}) {
+      const std::vector<ContactSegment> segments = contact_segments(pair, theta);
+      const std::vector<char> proven = proven_at(pair, theta);
+      for (const ContactSegment& s : segments) {
+        if (!proven[size_t(s.id)]) continue;
+        ++proven_count;
+        const Vec2 across = perp_left(normalized(s.curve.to - s.curve.from));
+        for (int k = 0; k <= 8; ++k) {
+          const Vec2 p = lerp(s.curve.from, s.curve.to, k / 8.0);
+          for (double side : {0.0, 0.99, -0.99}) {
+            const Vec2 q = p + side * margin * across;
+            ASSERT_TRUE(tester.blocked({q.x, q.y, theta}))
+                << "segment " << s.id << " at theta " << theta << ", " << k << "/8";
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(proven_count, 1000);  // the rough stars prove most of theirs
+}
+
+// Slices computed with the proof and without agree: free components (count, boundedness,
+// area), realizable segments, contact graph, blocked area; on rough stars (many segments
+// proven), random curved pairs (few) and designed ones (parallel edges sliding along each
+// other, perfect fits, symmetric parts: contact segments lying on other segments' slabs'
+// edges, which only the margin keeps), with the proof forced on.
+TEST(BlockedProof, SlicesAreTheSameWithAndWithoutIt) {
+  ModeGuard guard;
+  std::mt19937 rng(11);
+  std::vector<Pair> pairs;
+  for (int n : {20, 50, 120}) pairs.push_back(rough_star_pair(n, 300 + unsigned(n)));
+  for (int i = 0; i < 20; ++i)
+    pairs.push_back(testkit::random_pair(rng, 4 + i % 6, 5 + i % 7, i % 3 == 0).pair);
+  for (unsigned seed = 1; seed <= 60; ++seed) pairs.push_back(testkit::designed_pair(seed).pair);
+  int left_out = 0;
+  for (size_t p = 0; p < pairs.size(); ++p) {
+    const Pair& pair = pairs[p];
+    for (double theta : {0.3, 1.1, 2.6, 5.0}) {
+      const Slice with = slice_with(pair, theta, BlockedProofMode::always);
+      const Slice without = slice_with(pair, theta, BlockedProofMode::never);
+      const std::vector<char> proven = proven_at(pair, theta);
+      left_out += int(std::count(proven.begin(), proven.end(), 1));
+      const std::string where = "pair " + std::to_string(p) + " theta " + std::to_string(theta);
+      ASSERT_EQ(with.contact_segments.size(), without.contact_segments.size()) << where;
+      ASSERT_EQ(with.free_components.size(), without.free_components.size()) << where;
+      for (size_t c = 0; c < with.free_components.size(); ++c) {
+        const FreeComponent& a = with.free_components[c];
+        const FreeComponent& b = without.free_components[c];
+        EXPECT_EQ(a.bounded, b.bounded) << where;
+        if (a.bounded) {
+          EXPECT_NEAR(a.area, b.area, 1e-9 * pair.tol.size * pair.tol.size) << where;
+        }
+      }
+      if (std::isinf(without.blocked_area)) {
+        EXPECT_EQ(with.blocked_area, without.blocked_area) << where;
+      } else {
+        EXPECT_NEAR(with.blocked_area, without.blocked_area,
+                    1e-9 * std::max(1.0, std::fabs(without.blocked_area)))
+            << where;
+      }
+      EXPECT_EQ(realizable_segments(with), realizable_segments(without)) << where;
+      EXPECT_EQ(with.contact_graph.nodes, without.contact_graph.nodes) << where;
+      EXPECT_EQ(with.contact_graph.edges.size(), without.contact_graph.edges.size()) << where;
+      EXPECT_EQ(with.degenerate.size(), without.degenerate.size()) << where;
+    }
+  }
+  EXPECT_GT(left_out, 2000);
+}
+
+// The automatic mode looks only where there are more than three contact segments per
+// feature: the rough star of 300 vertices per part, not the one of 100.
+TEST(BlockedProof, LooksWhereSegmentsOutnumberFeaturesThreeToOne) {
+  const Pair rough = rough_star_pair(100, 400);
+  const size_t features = size_t(rough.moving.feature_count() + rough.fixed.feature_count());
+  EXPECT_TRUE(worth_proving(rough, 3 * features + 1));
+  EXPECT_FALSE(worth_proving(rough, 3 * features));
+  const Pair rougher = rough_star_pair(300, 400);
+  const size_t more = size_t(rougher.moving.feature_count() + rougher.fixed.feature_count());
+  EXPECT_TRUE(worth_proving(rougher, contact_segments(rougher, 0.7).size()));
+  EXPECT_GT(contact_segments(rougher, 0.7).size(), 3 * more);
+}
