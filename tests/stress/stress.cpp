@@ -11,6 +11,9 @@
 //                                       other units, whose round-off differs
 //   --offset X                          the fixed part of every random and designed pair
 //                                       moved by (X, -X / 2): a drawing far from its origin
+//   --prove-blocked always|never        slices leave out contact segments proven blocked
+//                                       always, or never (slice/blocked_proof.hpp), instead
+//                                       of only where segments outnumber features 3 to 1
 //
 // Each pair goes through the checks the tests make on a few: the completeness of its
 // critical orientations (tests/support/completeness.hpp), its slices at random and at critical
@@ -34,6 +37,7 @@
 #include "cslice/mesh.hpp"
 #include "cslice/query.hpp"
 #include "cslice/space.hpp"
+#include "slice/blocked_proof.hpp"
 #include "support/band.hpp"
 #include "support/completeness.hpp"
 #include "support/crossings.hpp"
@@ -169,6 +173,14 @@ int main(int argc, char** argv) {
       g_scale = std::stod(argv[++i]);
     } else if (arg == "--offset" && i + 1 < argc) {
       g_offset = std::stod(argv[++i]);
+    } else if (arg == "--prove-blocked" && i + 1 < argc) {
+      const std::string mode = argv[++i];
+      if (mode != "always" && mode != "never") {
+        std::cerr << "--prove-blocked takes always or never\n";
+        return 2;
+      }
+      cslice::set_blocked_proof_mode(mode == "always" ? cslice::BlockedProofMode::always
+                                                      : cslice::BlockedProofMode::never);
     } else if (arg == "--designed" && i + 2 < argc) {
       g_designed_first = unsigned(std::stoul(argv[i + 1]));
       g_designed_last = unsigned(std::stoul(argv[i + 2]));
@@ -183,8 +195,9 @@ int main(int argc, char** argv) {
   }
   if (g_files.empty() && g_first >= g_last && g_designed_first >= g_designed_last &&
       g_symmetric_first >= g_symmetric_last) {
-    std::cerr << "usage: cslice_stress [--scale K] [--offset X] --seeds FIRST LAST | --designed "
-                 "FIRST LAST | --symmetric FIRST LAST | PAIR.json ...\n";
+    std::cerr << "usage: cslice_stress [--scale K] [--offset X] [--prove-blocked always|never] "
+                 "--seeds FIRST LAST | --designed FIRST LAST | --symmetric FIRST LAST | "
+                 "PAIR.json ...\n";
     return 2;
   }
   return RUN_ALL_TESTS();
