@@ -12,6 +12,8 @@
 //   BM_CgalStar/<n>             CGAL::minkowski_sum_by_reduced_convolution_2 (exact
 //                               kernel) of the same pairs: fixed + moving turned and reflected
 //   BM_SliceRoughStar/<n>       rough stars (independent radius noise): k grows like n^2
+//   BM_SliceRoughStarUnproven/<n>  the same with no contact segment proven blocked
+//                               (slice/blocked_proof.hpp): what the proof saves
 //   BM_CgalRoughStar/<n>        CGAL on those
 //   BM_SliceCurved/<e>          smooth stars with half their edges arcs, e edges per part
 //                               (2e features per part)
@@ -32,6 +34,7 @@
 #include <vector>
 
 #include "cslice/slice.hpp"
+#include "slice/blocked_proof.hpp"
 #include "support/examples.hpp"
 #include "support/random_polygons.hpp"
 
@@ -152,6 +155,11 @@ void BM_SlicerStar(benchmark::State& state) {
 void BM_SliceRoughStar(benchmark::State& state) {
   run_slice(state, star_pair(Shape::rough, int(state.range(0))).pair, kStarTheta);
 }
+void BM_SliceRoughStarUnproven(benchmark::State& state) {
+  cslice::set_blocked_proof_mode(cslice::BlockedProofMode::never);
+  run_slice(state, star_pair(Shape::rough, int(state.range(0))).pair, kStarTheta);
+  cslice::set_blocked_proof_mode(cslice::BlockedProofMode::automatic);
+}
 void BM_SliceCurved(benchmark::State& state) {
   run_slice(state, star_pair(Shape::curved, int(state.range(0))).pair, kStarTheta);
 }
@@ -214,6 +222,7 @@ BENCHMARK(BM_CgalStar)->Arg(100)->Arg(300)->Arg(1000)->Unit(benchmark::kMillisec
 BENCHMARK(BM_CgalStar)->Arg(3000)->Arg(10000)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 BENCHMARK(BM_SliceRoughStar)->Arg(100)->Arg(300)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SliceRoughStarUnproven)->Arg(300)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CgalRoughStar)->Arg(100)->Arg(300)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CgalRoughStar)->Arg(1000)->Iterations(1)->Unit(benchmark::kMillisecond);
 
