@@ -225,15 +225,16 @@ TEST(BlockedProof, SlicesAreTheSameWithAndWithoutIt) {
   EXPECT_GT(left_out, 2000);
 }
 
-// The automatic mode looks only where there are more than three contact segments per
-// feature: the rough star of 300 vertices per part, not the one of 100.
-TEST(BlockedProof, LooksWhereSegmentsOutnumberFeaturesThreeToOne) {
+// The automatic mode looks only where there are more than two contact segments per feature:
+// the rough star of 300 vertices per part, not the one of 100 (1.8 per feature).
+TEST(BlockedProof, LooksWhereSegmentsOutnumberFeaturesTwoToOne) {
   const Pair rough = rough_star_pair(100, 400);
   const size_t features = size_t(rough.moving.feature_count() + rough.fixed.feature_count());
-  EXPECT_TRUE(worth_proving(rough, 3 * features + 1));
-  EXPECT_FALSE(worth_proving(rough, 3 * features));
+  EXPECT_TRUE(worth_proving(rough, 2 * features + 1));
+  EXPECT_FALSE(worth_proving(rough, 2 * features));
+  EXPECT_FALSE(worth_proving(rough, contact_segments(rough, 0.7).size()));
   const Pair rougher = rough_star_pair(300, 400);
   const size_t more = size_t(rougher.moving.feature_count() + rougher.fixed.feature_count());
   EXPECT_TRUE(worth_proving(rougher, contact_segments(rougher, 0.7).size()));
-  EXPECT_GT(contact_segments(rougher, 0.7).size(), 3 * more);
+  EXPECT_GT(contact_segments(rougher, 0.7).size(), 2 * more);
 }

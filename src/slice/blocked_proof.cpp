@@ -12,9 +12,10 @@ namespace {
 std::atomic<BlockedProofMode> g_mode{BlockedProofMode::automatic};
 
 // Below this many contact segments per feature the proof costs more than it saves (measured on
-// the rough stars, one-shot slices: at 1.8 per feature 28% slower, at 4 18% faster, at 14.5
-// 60% faster; docs/performance.md, sixteenth session).
-constexpr size_t kSegmentsPerFeatureWorthProving = 3;
+// one-shot slices of the stars: at 0.5 per feature (smooth) 70% slower, at 1.8 10 to 28%
+// slower, at 2.0 even, at 2.6 15 to 20% faster, at 4 16% faster, at 14.5 3.4 times faster;
+// docs/performance.md, sixteenth session).
+constexpr size_t kSegmentsPerFeatureWorthProving = 2;
 
 // Narrows [lo, hi] (parameters along a target line, 0 and 1 at its ends) to where a value
 // running linearly from v0 to v1 lies strictly between a and b; false when nothing is left.

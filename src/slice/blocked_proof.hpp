@@ -24,7 +24,7 @@
 
 namespace cslice {
 
-// Whether the slice looks for contact segments proven blocked: when there are more than three
+// Whether the slice looks for contact segments proven blocked: when there are more than two
 // contact segments per feature of the pair (see docs/performance.md, sixteenth session).
 bool worth_proving(const Pair& pair, size_t contact_segments);
 
