@@ -29,11 +29,13 @@ Pair parse(const std::string& json) {
   return std::move(*r.pair);
 }
 
-// A rough lobed star pair (the benchmarks' rough stars), n vertices per part.
-Pair rough_star_pair(int n, unsigned seed) {
+// A rough lobed star pair (the benchmarks' rough stars), n vertices per part; with
+// arc_fraction, that share of the edges arcs.
+Pair rough_star_pair(int n, unsigned seed, double arc_fraction = 0.0) {
   for (;; ++seed) {
     std::mt19937 rng(seed);
-    const testkit::StarPairLoops loops = testkit::lobed_star_pair(rng, n, 0.3 * kTwoPi / n, 0.0);
+    const testkit::StarPairLoops loops =
+        testkit::lobed_star_pair(rng, n, 0.3 * kTwoPi / n, arc_fraction);
     LoadResult r =
         parse_pair(testkit::pair_json("star", {loops.moving}, {loops.fixed}), "rough star");
     if (r.ok()) return std::move(*r.pair);
@@ -152,7 +154,8 @@ TEST(MaterialRegions, RegionsLieInsideTheMaterialWithTheMargin) {
 TEST(BlockedProof, ProvenSegmentsAreBlocked) {
   std::vector<Pair> pairs;
   for (int n : {30, 60, 100}) pairs.push_back(rough_star_pair(n, 200 + unsigned(n)));
-  int proven_count = 0;
+  for (int n : {60, 150}) pairs.push_back(rough_star_pair(n, 250 + unsigned(n), 0.25));
+  int proven_count = 0, by_arcs = 0;
   for (const Pair& pair : pairs) {
     PlacementTester tester(pair);
     const double margin = kProvenBlockedMarginPerGeometric * pair.tol.geometric;
@@ -162,6 +165,7 @@ TEST(BlockedProof, ProvenSegmentsAreBlocked) {
       for (const ContactSegment& s : segments) {
         if (!proven[size_t(s.id)]) continue;
         ++proven_count;
+        by_arcs += s.kind == ContactKind::arc_segment || s.kind == ContactKind::segment_arc;
         const Vec2 across = perp_left(normalized(s.curve.to - s.curve.from));
         for (int k = 0; k <= 8; ++k) {
           const Vec2 p = lerp(s.curve.from, s.curve.to, k / 8.0);
@@ -175,6 +179,7 @@ TEST(BlockedProof, ProvenSegmentsAreBlocked) {
     }
   }
   EXPECT_GT(proven_count, 1000);  // the rough stars prove most of theirs
+  EXPECT_GT(by_arcs, 50);         // arcs on segments too
 }
 
 // Slices computed with the proof and without agree: free components (count, boundedness,
@@ -187,6 +192,7 @@ TEST(BlockedProof, SlicesAreTheSameWithAndWithoutIt) {
   std::mt19937 rng(11);
   std::vector<Pair> pairs;
   for (int n : {20, 50, 120}) pairs.push_back(rough_star_pair(n, 300 + unsigned(n)));
+  for (int n : {40, 100}) pairs.push_back(rough_star_pair(n, 350 + unsigned(n), 0.25));
   for (int i = 0; i < 20; ++i)
     pairs.push_back(testkit::random_pair(rng, 4 + i % 6, 5 + i % 7, i % 3 == 0).pair);
   for (unsigned seed = 1; seed <= 60; ++seed) pairs.push_back(testkit::designed_pair(seed).pair);

@@ -85,10 +85,11 @@ void BlockedProof::find(const std::vector<ContactSegment>& segments, const PairR
     if (covered(segments[size_t(id)].curve, id, margin)) proven[size_t(id)] = 1;
 }
 
-// One slab per vertex/segment or segment/vertex contact segment whose segment has a region
-// deeper than twice the margin. A slab's frame is its contact segment's: the segment (fixed
-// for vertex/segment, moving for segment/vertex) moved by a translation, or by a turn through
-// theta + pi, keeps its start, its direction and its material on the left (the blocked side).
+// One slab per contact segment of a disc feature (vertex or arc) on a straight one, either
+// way round, whose segment has a region deeper than twice the margin. The disc touches the
+// segment at one point of its boundary, the same all along the contact segment (src/contacts:
+// the segment shifted, or turned through theta + pi, whole). So a slab's frame is its contact
+// segment's: start, direction, and material on the left (the blocked side).
 void BlockedProof::add_slabs(const std::vector<ContactSegment>& segments,
                              const PairRegions& regions, double margin) {
   slabs_.clear();
@@ -96,9 +97,11 @@ void BlockedProof::add_slabs(const std::vector<ContactSegment>& segments,
   for (const ContactSegment& s : segments) {
     if (!is_line_target(s)) continue;
     const MaterialRegion* region =
-        s.kind == ContactKind::vertex_segment   ? &regions.fixed[size_t(s.fixed_feature)]
-        : s.kind == ContactKind::segment_vertex ? &regions.moving[size_t(s.moving_feature)]
-                                                : nullptr;
+        s.kind == ContactKind::vertex_segment || s.kind == ContactKind::arc_segment
+            ? &regions.fixed[size_t(s.fixed_feature)]
+        : s.kind == ContactKind::segment_vertex || s.kind == ContactKind::segment_arc
+            ? &regions.moving[size_t(s.moving_feature)]
+            : nullptr;
     if (!region || region->depth <= 2.0 * margin) continue;
     const Vec2 d = s.curve.to - s.curve.from;
     const double length = cslice::length(d);

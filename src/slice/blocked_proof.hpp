@@ -1,15 +1,16 @@
 // Contact segments proven to lie in blocked space, left out of the arrangement.
 //
-// A moving vertex strictly inside the fixed material, or a fixed vertex strictly inside the
-// moving material, makes the parts overlap. Each part's straight edges carry a region of
-// material (parts/material_regions.hpp). A vertex/segment or segment/vertex contact segment
-// runs along the translations where its vertex touches its segment; swept to its blocked
-// side through that segment's region, it becomes a slab of translations where the vertex
-// lies inside the region, more than `margin` from the other part's boundary below the slab's
-// depth less margin: blocked space with that margin. A line contact segment covered end to
-// end by other segments' slabs lies in blocked space with the margin all along, so leaving it
-// out of the arrangement only merges blocked faces: no free point, and no piece of the free
-// space's boundary, lies within the margin of it. It stays in the slice's contact segments.
+// A point of the moving part's boundary strictly inside the fixed material, or the reverse,
+// makes the parts overlap. Each part's straight edges carry a region of material
+// (parts/material_regions.hpp). A contact segment of a vertex or an arc on a segment (either
+// part's) runs along the translations where one point of the vertex or arc touches the
+// segment; swept to its blocked side through that segment's region, it becomes a slab of
+// translations where that point lies inside the region, more than `margin` from the other
+// part's boundary below the slab's depth less margin: blocked space with that margin. A line
+// contact segment covered end to end by other segments' slabs lies in blocked space with the margin
+// all along, so leaving it out of the arrangement only merges blocked faces: no free point, and no
+// piece of the free space's boundary, lies within the margin of it. It stays in the slice's contact
+// segments.
 //
 // Where contact segments greatly outnumber features (rough contours, whose contact segments
 // cross in a band of shallow overlap along the boundary of the free space) most of them are
