@@ -9,6 +9,10 @@ namespace {
 
 // Deepest region, in lengths of its edge (see material_regions.hpp).
 constexpr double kMaxDepthPerLength = 2.0;
+// How often a region is halved for arcs near it before it is given up, and the share of the
+// margin an arc may come closer than it (see material_regions below).
+constexpr int kMaxHalvings = 12;
+constexpr double kArcClearanceSlack = 1e-3;
 
 Vec2 unit_direction(const Curve& c) {
   return normalized(c.to - c.from);
@@ -47,20 +51,20 @@ struct EdgeRef {
   int loop, index;
 };
 
-// The region of edge i of the loop before other edges limit its depth; nullopt-like depth 0
-// when it has none.
+// The region of edge i of the loop before other edges limit its depth; depth 0 when it has
+// none.
 MaterialRegion corner_sides(const Loop& loop, int i) {
   const int n = int(loop.edges.size());
   const Curve& e = loop.edges[size_t(i)];
   const Curve& prev = loop.edges[size_t((i + n - 1) % n)];
   const Curve& next = loop.edges[size_t((i + 1) % n)];
   MaterialRegion r;
-  if (n < 3 || !prev.is_segment() || !next.is_segment()) return r;
+  if (n < 3) return r;
   const Vec2 along = unit_direction(e), across = perp_left(along);
-  // A corner's bisector is the sum of its two edges' inward normals (convex and reflex
-  // corners alike; perpendicular where they are collinear).
-  const Vec2 b0 = normalized(across + perp_left(unit_direction(prev)));
-  const Vec2 b1 = normalized(across + perp_left(unit_direction(next)));
+  // A corner's bisector is the sum of its two edges' inward normals where they meet (convex
+  // and reflex corners alike; perpendicular where they are collinear or tangent).
+  const Vec2 b0 = normalized(across + perp_left(normalized(tangent_at(prev, 1.0))));
+  const Vec2 b1 = normalized(across + perp_left(normalized(tangent_at(next, 0.0))));
   if (!is_finite(along) || !is_finite(b0) || !is_finite(b1)) return r;
   r.start_side = {dot(b0, along), dot(b0, across)};
   r.end_side = {dot(b1, along), dot(b1, across)};
@@ -70,13 +74,48 @@ MaterialRegion corner_sides(const Loop& loop, int i) {
   return r;
 }
 
+// The region's part higher than margin and lower than depth less margin, as a convex polygon
+// in the part's frame (three or four corners); empty when its corner sides meet below margin.
+std::vector<Vec2> inner_polygon(const MaterialRegion& r, double length, double margin, Vec2 origin,
+                                Vec2 along, Vec2 across) {
+  auto world = [&](Vec2 v) { return origin + v.x * along + v.y * across; };
+  const Vec2 end{length, 0.0};
+  const double top = r.depth - margin;
+  const Vec2 s0 = r.start_side * (margin / r.start_side.y);
+  const Vec2 e0 = end + r.end_side * (margin / r.end_side.y);
+  if (!(s0.x < e0.x)) return {};
+  const Vec2 s1 = r.start_side * (top / r.start_side.y);
+  const Vec2 e1 = end + r.end_side * (top / r.end_side.y);
+  if (s1.x < e1.x) return {world(s0), world(e0), world(e1), world(s1)};
+  // The sides meet between: at a r.start_side = end + b r.end_side.
+  const double a = cross(end, r.end_side) / cross(r.start_side, r.end_side);
+  return {world(s0), world(e0), world(r.start_side * a)};
+}
+
+// Whether every point of the arc lies at least `clearance` from the convex polygon: it keeps
+// that far from the polygon's sides and does not lie inside it.
+bool arc_clear_of(const Curve& arc, const std::vector<Vec2>& polygon, double clearance) {
+  const size_t n = polygon.size();
+  bool inside = true;
+  for (size_t k = 0; k < n; ++k) {
+    const Vec2 a = polygon[k], b = polygon[(k + 1) % n];
+    if (distance_segment_arc(make_segment(a, b), arc) < clearance) return false;
+    inside = inside && cross(b - a, arc.from - a) > 0.0;
+  }
+  return !inside;
+}
+
 }  // namespace
 
 // Why the edges left out of the depth search cannot come within margin of a point of the
 // region higher than margin: a straight neighbour at a convex corner lies beyond the
 // bisector, where points are nearer the edge's line than the neighbour's; at a reflex or
-// flat corner it lies below the edge's line. Every other edge that comes within margin of
-// the region meets it with its sides pushed out by margin, and limits the depth there.
+// flat corner it lies below the edge's line. Every other straight edge that comes within
+// margin of the region meets it with its sides pushed out by margin, and limits the depth
+// there. Arcs, neighbours or not, are checked against the region itself: its depth is halved
+// until each keeps clear of the part higher than margin by the margin (less a thousandth,
+// for the round-off of the distance at a corner where an arc leaves the edge tangentially
+// and comes exactly that close), or the region is given up.
 std::vector<MaterialRegion> material_regions(const Part& part, double margin) {
   std::vector<MaterialRegion> regions(part.features.size());
   std::vector<EdgeRef> edges;
@@ -90,6 +129,7 @@ std::vector<MaterialRegion> material_regions(const Part& part, double margin) {
     }
   std::sort(edges.begin(), edges.end(),
             [](const EdgeRef& a, const EdgeRef& b) { return a.box.lo.x < b.box.lo.x; });
+  std::vector<const Curve*> near_arcs;
   for (size_t f = 0; f < part.features.size(); ++f) {
     const Feature& feature = part.features[f];
     if (feature.kind != FeatureKind::segment) continue;
@@ -97,6 +137,7 @@ std::vector<MaterialRegion> material_regions(const Part& part, double margin) {
     const int n = int(loop.edges.size()), i = feature.index;
     MaterialRegion r = corner_sides(loop, i);
     if (r.depth <= 0.0) continue;
+    std::vector<const Curve*>& arcs = near_arcs;
     const Curve& e = loop.edges[size_t(i)];
     const Vec2 along = unit_direction(e), across = perp_left(along);
     auto world = [&](Vec2 v) { return v.x * along + v.y * across; };
@@ -109,20 +150,26 @@ std::vector<MaterialRegion> material_regions(const Part& part, double margin) {
                                   [](const EdgeRef& g, double x) { return g.box.lo.x < x; });
     for (auto g = first; g != edges.end() && g->box.lo.x <= reach.hi.x; ++g) {
       if (!g->box.overlaps(reach)) continue;
-      if (g->loop == feature.loop &&
-          (g->index == i || g->index == (i + 1) % n || g->index == (i + n - 1) % n))
-        continue;
       const Curve& c = *g->curve;
-      if (c.is_segment()) {
+      if (g->loop == feature.loop && g->index == i) continue;
+      const bool neighbour =
+          g->loop == feature.loop && (g->index == (i + 1) % n || g->index == (i + n - 1) % n);
+      if (!c.is_segment())
+        arcs.push_back(&c);
+      else if (!neighbour)
         r.depth = std::min(
             r.depth, lowest_inside(local(c.from), local(c.to), distance(e.from, e.to), r, margin));
-      } else {
-        // An arc: the lowest corner of its box, no higher than any of its points.
-        const Box& b = g->box;
-        for (Vec2 p : {b.lo, b.hi, Vec2{b.lo.x, b.hi.y}, Vec2{b.hi.x, b.lo.y}})
-          r.depth = std::min(r.depth, std::max(0.0, local(p).y));
-      }
     }
+    const double clearance = (1.0 - kArcClearanceSlack) * margin;
+    for (int halvings = 0; !arcs.empty() && r.depth > 2.0 * margin; ++halvings) {
+      const std::vector<Vec2> inner =
+          inner_polygon(r, distance(e.from, e.to), margin, e.from, along, across);
+      bool clear = !inner.empty();
+      for (const Curve* arc : arcs) clear = clear && arc_clear_of(*arc, inner, clearance);
+      if (clear) break;
+      r.depth = halvings < kMaxHalvings ? 0.5 * r.depth : 0.0;
+    }
+    arcs.clear();
     regions[f] = r;
   }
   return regions;

@@ -17,15 +17,15 @@ namespace cslice {
 // The regions of neighbouring edges meet along their common bisector, so together they line
 // the boundary; at a reflex corner they reach past the edge's end, over the corner.
 struct MaterialRegion {
-  double depth = 0.0;  // 0: no region (arcs, vertices, edges beside an arc or a cusp)
+  double depth = 0.0;  // 0: no region (arcs, vertices, edges at a cusp or hemmed in by arcs)
   Vec2 start_side, end_side;
 };
 
 // Per feature of the part, in feature order. Each straight edge's region is as deep as no
-// other edge of the part comes within `margin` of it (so every point of the region lower
-// than depth - margin lies farther than margin inside the material), and at most twice the
-// edge's length: deeper regions prove few more contact segments blocked and cost more to
-// search (docs/performance.md, sixteenth session).
+// other edge of the part comes within `margin` of it (so every point of the region higher
+// than margin and lower than depth - margin lies farther than margin, less a thousandth of
+// it, inside the material), and at most twice the edge's length: deeper regions prove few more
+// contact segments blocked and cost more to search (docs/performance.md, sixteenth session).
 std::vector<MaterialRegion> material_regions(const Part& part, double margin);
 
 }  // namespace cslice
