@@ -56,12 +56,9 @@ Slice slice_with(const Pair& pair, double theta, BlockedProofMode mode) {
 
 // The contact segments proven blocked at theta, found as the slice finds them.
 std::vector<char> proven_at(const Pair& pair, double theta) {
-  const double margin = kProvenBlockedMarginPerGeometric * pair.tol.geometric;
-  const PairRegions regions{material_regions(pair.moving, margin),
-                            material_regions(pair.fixed, margin)};
   BlockedProof proof;
   std::vector<char> proven;
-  proof.find(contact_segments(pair, theta), regions, margin, proven);
+  proof.find(contact_segments(pair, theta), pair_regions(pair), proof_margin(pair), proven);
   return proven;
 }
 
@@ -170,7 +167,7 @@ TEST(BlockedProof, ProvenSegmentsAreBlocked) {
   int proven_count = 0, by_arcs = 0;
   for (const Pair& pair : pairs) {
     PlacementTester tester(pair);
-    const double margin = kProvenBlockedMarginPerGeometric * pair.tol.geometric;
+    const double margin = proof_margin(pair);
     for (double theta : {0.0, 0.7, 2.1, 4.0}) {
       const std::vector<ContactSegment> segments = contact_segments(pair, theta);
       const std::vector<char> proven = proven_at(pair, theta);

@@ -79,16 +79,13 @@ MaterialRegion corner_sides(const Loop& loop, int i) {
 std::vector<Vec2> inner_polygon(const MaterialRegion& r, double length, double margin, Vec2 origin,
                                 Vec2 along, Vec2 across) {
   auto world = [&](Vec2 v) { return origin + v.x * along + v.y * across; };
-  const Vec2 end{length, 0.0};
   const double top = r.depth - margin;
-  const Vec2 s0 = r.start_side * (margin / r.start_side.y);
-  const Vec2 e0 = end + r.end_side * (margin / r.end_side.y);
+  const Vec2 s0 = r.start_at(margin), e0 = r.end_at(margin, length);
   if (!(s0.x < e0.x)) return {};
-  const Vec2 s1 = r.start_side * (top / r.start_side.y);
-  const Vec2 e1 = end + r.end_side * (top / r.end_side.y);
+  const Vec2 s1 = r.start_at(top), e1 = r.end_at(top, length);
   if (s1.x < e1.x) return {world(s0), world(e0), world(e1), world(s1)};
   // The sides meet between: at a r.start_side = end + b r.end_side.
-  const double a = cross(end, r.end_side) / cross(r.start_side, r.end_side);
+  const double a = cross(Vec2{length, 0.0}, r.end_side) / cross(r.start_side, r.end_side);
   return {world(s0), world(e0), world(r.start_side * a)};
 }
 
@@ -137,14 +134,14 @@ std::vector<MaterialRegion> material_regions(const Part& part, double margin) {
     const int n = int(loop.edges.size()), i = feature.index;
     MaterialRegion r = corner_sides(loop, i);
     if (r.depth <= 0.0) continue;
-    std::vector<const Curve*>& arcs = near_arcs;
     const Curve& e = loop.edges[size_t(i)];
+    const double length = distance(e.from, e.to);
     const Vec2 along = unit_direction(e), across = perp_left(along);
-    auto world = [&](Vec2 v) { return v.x * along + v.y * across; };
+    auto world = [&](Vec2 v) { return e.from + v.x * along + v.y * across; };
     auto local = [&](Vec2 p) { return Vec2{dot(p - e.from, along), dot(p - e.from, across)}; };
     Box reach = bounding_box(e).inflated(margin);
-    reach.add(e.from + world(r.start_side * (r.depth / r.start_side.y)));
-    reach.add(e.to + world(r.end_side * (r.depth / r.end_side.y)));
+    reach.add(world(r.start_at(r.depth)));
+    reach.add(world(r.end_at(r.depth, length)));
     reach = reach.inflated(margin);
     auto first = std::lower_bound(edges.begin(), edges.end(), reach.lo.x - widest,
                                   [](const EdgeRef& g, double x) { return g.box.lo.x < x; });
@@ -155,21 +152,19 @@ std::vector<MaterialRegion> material_regions(const Part& part, double margin) {
       const bool neighbour =
           g->loop == feature.loop && (g->index == (i + 1) % n || g->index == (i + n - 1) % n);
       if (!c.is_segment())
-        arcs.push_back(&c);
+        near_arcs.push_back(&c);
       else if (!neighbour)
-        r.depth = std::min(
-            r.depth, lowest_inside(local(c.from), local(c.to), distance(e.from, e.to), r, margin));
+        r.depth = std::min(r.depth, lowest_inside(local(c.from), local(c.to), length, r, margin));
     }
     const double clearance = (1.0 - kArcClearanceSlack) * margin;
-    for (int halvings = 0; !arcs.empty() && r.depth > 2.0 * margin; ++halvings) {
-      const std::vector<Vec2> inner =
-          inner_polygon(r, distance(e.from, e.to), margin, e.from, along, across);
+    for (int halvings = 0; !near_arcs.empty() && r.depth > 2.0 * margin; ++halvings) {
+      const std::vector<Vec2> inner = inner_polygon(r, length, margin, e.from, along, across);
       bool clear = !inner.empty();
-      for (const Curve* arc : arcs) clear = clear && arc_clear_of(*arc, inner, clearance);
+      for (const Curve* arc : near_arcs) clear = clear && arc_clear_of(*arc, inner, clearance);
       if (clear) break;
       r.depth = halvings < kMaxHalvings ? 0.5 * r.depth : 0.0;
     }
-    arcs.clear();
+    near_arcs.clear();
     regions[f] = r;
   }
   return regions;

@@ -19,6 +19,11 @@ namespace cslice {
 struct MaterialRegion {
   double depth = 0.0;  // 0: no region (arcs, vertices, edges at a cusp or hemmed in by arcs)
   Vec2 start_side, end_side;
+  // Where the corner sides reach `height`, in the edge's frame (edge of length `length`).
+  Vec2 start_at(double height) const { return start_side * (height / start_side.y); }
+  Vec2 end_at(double height, double length) const {
+    return Vec2{length, 0.0} + end_side * (height / end_side.y);
+  }
 };
 
 // Per feature of the part, in feature order. Each straight edge's region is as deep as no

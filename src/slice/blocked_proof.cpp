@@ -68,8 +68,21 @@ bool worth_proving(const Pair& pair, size_t contact_segments) {
 void set_blocked_proof_mode(BlockedProofMode mode) {
   g_mode.store(mode);
 }
-BlockedProofMode blocked_proof_mode() {
-  return g_mode.load();
+
+double proof_margin(const Pair& pair) {
+  return kProvenBlockedMarginPerGeometric * pair.tol.geometric;
+}
+
+PairRegions pair_regions(const Pair& pair) {
+  const double margin = proof_margin(pair);
+  return {material_regions(pair.moving, margin), material_regions(pair.fixed, margin)};
+}
+
+BlockedProof::CellRange BlockedProof::cells(const Box& b) const {
+  return {std::clamp(int((b.lo.x - origin_.x) / cell_), 0, columns_ - 1),
+          std::clamp(int((b.hi.x - origin_.x) / cell_), 0, columns_ - 1),
+          std::clamp(int((b.lo.y - origin_.y) / cell_), 0, rows_ - 1),
+          std::clamp(int((b.hi.y - origin_.y) / cell_), 0, rows_ - 1)};
 }
 
 void BlockedProof::find(const std::vector<ContactSegment>& segments, const PairRegions& regions,
@@ -112,13 +125,12 @@ void BlockedProof::add_slabs(const std::vector<ContactSegment>& segments,
                     region->end_side, s.id};
     // Its corners: its ends, and where the corner bisectors reach its depth (past the apex
     // when the bisectors meet first: the box still holds the slab).
-    auto world = [&](Vec2 v) { return v.x * along + v.y * slab.across; };
-    const Vec2 to = s.curve.to;
+    auto world = [&](Vec2 v) { return slab.from + v.x * along + v.y * slab.across; };
     Box box;
     box.add(slab.from);
-    box.add(to);
-    box.add(slab.from + world(slab.start_side * (slab.depth / slab.start_side.y)));
-    box.add(to + world(slab.end_side * (slab.depth / slab.end_side.y)));
+    box.add(s.curve.to);
+    box.add(world(region->start_at(slab.depth)));
+    box.add(world(region->end_at(slab.depth, length)));
     slabs_.push_back(slab);
     slab_boxes_.push_back(box);
   }
@@ -145,28 +157,21 @@ void BlockedProof::index_slabs(const std::vector<ContactSegment>& segments) {
   columns_ = int(std::min(w / cell_, 4.0 * n)) + 1;
   rows_ = int(std::min(h / cell_, 4.0 * n)) + 1;
   origin_ = all.lo;
-  auto cells = [&](const Box& b, int& x0, int& x1, int& y0, int& y1) {
-    x0 = std::clamp(int((b.lo.x - origin_.x) / cell_), 0, columns_ - 1);
-    x1 = std::clamp(int((b.hi.x - origin_.x) / cell_), 0, columns_ - 1);
-    y0 = std::clamp(int((b.lo.y - origin_.y) / cell_), 0, rows_ - 1);
-    y1 = std::clamp(int((b.hi.y - origin_.y) / cell_), 0, rows_ - 1);
-  };
   cell_start_.assign(size_t(columns_) * size_t(rows_) + 1, 0);
   for (const Box& b : slab_boxes_) {
-    int x0, x1, y0, y1;
-    cells(b, x0, x1, y0, y1);
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) ++cell_start_[size_t(y) * size_t(columns_) + size_t(x) + 1];
+    const CellRange r = cells(b);
+    for (int y = r.y0; y <= r.y1; ++y)
+      for (int x = r.x0; x <= r.x1; ++x)
+        ++cell_start_[size_t(y) * size_t(columns_) + size_t(x) + 1];
   }
   for (size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
   cell_slabs_.resize(size_t(cell_start_.back()));
   cell_boxes_.resize(size_t(cell_start_.back()));
   fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
   for (size_t k = 0; k < slabs_.size(); ++k) {
-    int x0, x1, y0, y1;
-    cells(slab_boxes_[k], x0, x1, y0, y1);
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) {
+    const CellRange r = cells(slab_boxes_[k]);
+    for (int y = r.y0; y <= r.y1; ++y)
+      for (int x = r.x0; x <= r.x1; ++x) {
         const size_t at = size_t(fill_[size_t(y) * size_t(columns_) + size_t(x)]++);
         cell_slabs_[at] = int(k);
         cell_boxes_[at] = slab_boxes_[k];
@@ -178,10 +183,10 @@ void BlockedProof::index_slabs(const std::vector<ContactSegment>& segments) {
 // follow each other, and the slab that covered one is tried first on the next.
 void BlockedProof::order_targets(const std::vector<ContactSegment>& segments) {
   auto cell_of = [&](const Curve& c) {
-    const Vec2 m = 0.5 * (c.from + c.to);
-    const int x = std::clamp(int((m.x - origin_.x) / cell_), 0, columns_ - 1);
-    const int y = std::clamp(int((m.y - origin_.y) / cell_), 0, rows_ - 1);
-    return size_t(y) * size_t(columns_) + size_t(y % 2 == 0 ? x : columns_ - 1 - x);
+    Box mid;
+    mid.add(0.5 * (c.from + c.to));
+    const CellRange r = cells(mid);
+    return size_t(r.y0) * size_t(columns_) + size_t(r.y0 % 2 == 0 ? r.x0 : columns_ - 1 - r.x0);
   };
   target_start_.assign(size_t(columns_) * size_t(rows_) + 1, 0);
   for (const ContactSegment& s : segments)
@@ -226,13 +231,10 @@ bool BlockedProof::covered(const Curve& target, int id, double margin) {
   Box b;
   b.add(p0);
   b.add(p1);
-  const int x0 = std::clamp(int((b.lo.x - origin_.x) / cell_), 0, columns_ - 1);
-  const int x1 = std::clamp(int((b.hi.x - origin_.x) / cell_), 0, columns_ - 1);
-  const int y0 = std::clamp(int((b.lo.y - origin_.y) / cell_), 0, rows_ - 1);
-  const int y1 = std::clamp(int((b.hi.y - origin_.y) / cell_), 0, rows_ - 1);
+  const CellRange r = cells(b);
   spans_.clear();
-  for (int y = y0; y <= y1; ++y)
-    for (int x = x0; x <= x1; ++x) {
+  for (int y = r.y0; y <= r.y1; ++y)
+    for (int x = r.x0; x <= r.x1; ++x) {
       const size_t cell = size_t(y) * size_t(columns_) + size_t(x);
       for (int k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
         if (!cell_boxes_[size_t(k)].overlaps(b)) continue;

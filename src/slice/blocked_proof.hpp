@@ -32,12 +32,17 @@ bool worth_proving(const Pair& pair, size_t contact_segments);
 // For tests: look always, never, or when worth_proving says (the default). Process-wide.
 enum class BlockedProofMode { automatic, always, never };
 void set_blocked_proof_mode(BlockedProofMode mode);
-BlockedProofMode blocked_proof_mode();
 
 // The material regions of both parts of a pair, found once per pair.
 struct PairRegions {
   std::vector<MaterialRegion> moving, fixed;
 };
+
+// The margin every proof on the pair keeps: kProvenBlockedMarginPerGeometric geometric
+// epsilons.
+double proof_margin(const Pair& pair);
+// Both parts' material regions for that margin.
+PairRegions pair_regions(const Pair& pair);
 
 // Finds the contact segments proven blocked, one slice after another in the same buffers.
 class BlockedProof {
@@ -58,6 +63,11 @@ class BlockedProof {
     Vec2 start_side, end_side;  // the region's corner bisectors, as in MaterialRegion
     int segment;
   };
+  struct CellRange {
+    int x0, x1, y0, y1;
+  };
+  // The grid cells a box overlaps, clamped to the grid.
+  CellRange cells(const Box& b) const;
   void add_slabs(const std::vector<ContactSegment>& segments, const PairRegions& regions,
                  double margin);
   void index_slabs(const std::vector<ContactSegment>& segments);

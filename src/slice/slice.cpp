@@ -106,11 +106,8 @@ class SliceBuilder {
       proven.assign(slice_.contact_segments.size(), 0);
       return;
     }
-    const double margin = kProvenBlockedMarginPerGeometric * pair_.tol.geometric;
-    if (!regions_)
-      regions_.emplace(PairRegions{material_regions(pair_.moving, margin),
-                                   material_regions(pair_.fixed, margin)});
-    scratch_.proof.find(slice_.contact_segments, *regions_, margin, proven);
+    if (!regions_) regions_.emplace(pair_regions(pair_));
+    scratch_.proof.find(slice_.contact_segments, *regions_, proof_margin(pair_), proven);
   }
 
   // The tester is built on first use: many slices settle every face by its labels.
