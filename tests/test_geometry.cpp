@@ -3,9 +3,12 @@
 // cross-checks of distances against dense sampling.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <string>
 
 #include "cslice/geometry.hpp"
+#include "geometry/box_pairs.hpp"
 #include "parts/loop_queries.hpp"
 
 using namespace cslice;
@@ -393,4 +396,92 @@ TEST(Angles, AnArcTurnedFarKeepsItsStartAngleOnItsStart) {
     const Vec2 start = placed.center + placed.radius * unit_vector(placed.start_angle);
     EXPECT_LT(distance(start, placed.from), 1e-12) << far;
   }
+}
+
+namespace {
+
+// The grid's pairs against every pair tried: each overlapping pair once, i < j, nothing else.
+// Boxes that touch at an edge or a corner overlap (Box::overlaps is closed); empty boxes
+// overlap nothing.
+void expect_grid_pairs_exact(const std::vector<Box>& boxes, const std::string& name) {
+  std::vector<std::pair<size_t, size_t>> expected, found;
+  for (size_t i = 0; i < boxes.size(); ++i)
+    for (size_t j = i + 1; j < boxes.size(); ++j)
+      if (boxes[i].overlaps(boxes[j])) expected.emplace_back(i, j);
+  BoxGridScratch scratch;
+  const bool gridded = for_each_overlapping_pair_on_grid(
+      boxes.size(), [&](size_t i) -> const Box& { return boxes[i]; }, scratch,
+      [&](size_t i, size_t j) { found.emplace_back(i, j); });
+  ASSERT_TRUE(gridded) << name;
+  for (auto [i, j] : found) EXPECT_LT(i, j) << name;
+  std::sort(found.begin(), found.end());
+  EXPECT_EQ(std::adjacent_find(found.begin(), found.end()), found.end()) << name << ": twice";
+  EXPECT_EQ(found, expected) << name;
+}
+
+Box box_around(Vec2 c, double w, double h) {
+  Box b;
+  b.add(Vec2{c.x - w / 2, c.y - h / 2});
+  b.add(Vec2{c.x + w / 2, c.y + h / 2});
+  return b;
+}
+
+}  // namespace
+
+TEST(BoxPairs, TheGridFindsExactlyTheOverlappingPairs) {
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int round = 0; round < 20; ++round) {
+    // Around a ring, as the contact families of a gear in a ring gear lie.
+    std::vector<Box> ring, mixed;
+    for (int i = 0; i < 400; ++i) {
+      const double a = kTwoPi * u(rng), r = 3.0 + 0.3 * u(rng);
+      ring.push_back(box_around({r * std::cos(a), r * std::sin(a)}, 0.2 * u(rng), 0.2 * u(rng)));
+      mixed.push_back(
+          box_around({4.0 * u(rng), 2.0 * u(rng)}, 1.5 * u(rng) * u(rng) * u(rng), 0.05 * u(rng)));
+    }
+    expect_grid_pairs_exact(ring, "ring " + std::to_string(round));
+    expect_grid_pairs_exact(mixed, "mixed " + std::to_string(round));
+  }
+}
+
+TEST(BoxPairs, TheGridOnDegenerateBoxes) {
+  // A unit grid of unit squares: every neighbour, diagonal ones too, touches exactly.
+  std::vector<Box> tiles;
+  for (int x = 0; x < 12; ++x)
+    for (int y = 0; y < 12; ++y) tiles.push_back(box_around({x + 0.5, y + 0.5}, 1.0, 1.0));
+  expect_grid_pairs_exact(tiles, "tiles");
+  // Points, some of them equal, and empty boxes among them.
+  std::vector<Box> points;
+  for (int i = 0; i < 300; ++i) {
+    if (i % 7 == 0) points.push_back(Box{});
+    points.push_back(box_around({double(i % 17), double(i % 5)}, 0.0, 0.0));
+  }
+  expect_grid_pairs_exact(points, "points");
+  // All on one horizontal line (no height at all), and all the same box.
+  std::vector<Box> flat, same;
+  for (int i = 0; i < 200; ++i) {
+    flat.push_back(box_around({0.37 * i, 1.0}, 0.5, 0.0));
+    same.push_back(box_around({1.0, 2.0}, 0.3, 0.1));
+  }
+  expect_grid_pairs_exact(flat, "flat");
+  expect_grid_pairs_exact(same, "same");
+  expect_grid_pairs_exact({}, "none");
+  expect_grid_pairs_exact({box_around({0, 0}, 1, 1)}, "one");
+}
+
+// A few boxes as large as the spread of many small ones would meet in every cell: the caller
+// sweeps instead.
+TEST(BoxPairs, TheGridDeclinesBoxesAsLargeAsTheirSpread) {
+  std::vector<Box> boxes;
+  for (int i = 0; i < 30; ++i) boxes.push_back(box_around({5.0 + 0.01 * i, 5.0}, 10.0, 10.0));
+  for (int i = 0; i < 370; ++i)
+    boxes.push_back(box_around({0.027 * i, 10.0 - 0.027 * i}, 0.01, 0.01));
+  BoxGridScratch scratch;
+  int visits = 0;
+  const bool gridded = for_each_overlapping_pair_on_grid(
+      boxes.size(), [&](size_t i) -> const Box& { return boxes[i]; }, scratch,
+      [&](size_t, size_t) { ++visits; });
+  EXPECT_FALSE(gridded);
+  EXPECT_EQ(visits, 0);
 }

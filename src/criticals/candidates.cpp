@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "criticals/bucket_sort.hpp"
+#include "geometry/box_pairs.hpp"
 
 namespace cslice {
 
@@ -336,11 +337,18 @@ struct Shared {
   std::optional<WholeCrossing> crossing;  // computed when first needed
 };
 
+// Bins with fewer entries are swept. On the paper's examples (about 40 entries a bin) the grid
+// took 30% more instructions to meet; on an 8-tooth gear in a ring gear (640 a bin) as many
+// as the sweep; on the 16-tooth one (2,270 a bin, 17 times as many box pairs swept as overlap)
+// 6% less time for all the critical orientations.
+constexpr size_t kMeetOnGridFrom = 1024;
+
 // The lists of one bin, kept per thread from bin to bin with their capacity: a bin's
 // neighbour lists were most of the allocations of the meeting pass.
 struct MeetingScratch {
   std::vector<std::vector<Neighbour>> near;
   std::vector<Shared> shared;
+  BoxGridScratch grid;
   void reset(size_t entries) {
     if (near.size() < entries) near.resize(entries);
     for (size_t i = 0; i < entries; ++i) near[i].clear();
@@ -355,7 +363,8 @@ class BinMeeting {
         scope_(scope),
         middle_(Pose{0.0, 0.0, scope.binning.lower(scope.bin) + 0.5 * scope.binning.width}),
         near_(scratch.near),
-        shared_(scratch.shared) {
+        shared_(scratch.shared),
+        grid_(scratch.grid) {
     scratch.reset(entries.size());
   }
 
@@ -367,15 +376,22 @@ class BinMeeting {
   }
 
  private:
+  // The entries are sorted by the left of their boxes, so a sweep along x finds the boxes
+  // that overlap; many of them are better found on a grid (geometry/box_pairs.hpp). Either
+  // way the same pairs, and the lists are sorted after.
   void find_pairs(std::vector<MeetingCandidate>& pairs) {
     const auto& e = entries_;
-    for (size_t i = 0; i < e.size(); ++i)
-      for (size_t j = i + 1; j < e.size() && e[j].box.lo.x <= e[i].box.hi.x; ++j)
-        if (may_meet(e[i], e[j])) {
-          near_[i].push_back({int(j)});
-          near_[j].push_back({int(i)});
-          pairs.push_back(ordered(e[i].family, e[j].family, -1, scope_.bin));
-        }
+    const auto meet = [&](size_t i, size_t j) {
+      if (!may_meet(e[i], e[j])) return;
+      near_[i].push_back({int(j)});
+      near_[j].push_back({int(i)});
+      pairs.push_back(ordered(e[i].family, e[j].family, -1, scope_.bin));
+    };
+    const auto box_of = [&](size_t i) -> const Box& { return e[i].box; };
+    if (e.size() < kMeetOnGridFrom ||
+        !for_each_overlapping_pair_on_grid(e.size(), box_of, grid_, meet))
+      for (size_t i = 0; i < e.size(); ++i)
+        for (size_t j = i + 1; j < e.size() && e[j].box.lo.x <= e[i].box.hi.x; ++j) meet(i, j);
     for (size_t i = 0; i < e.size(); ++i)
       std::sort(near_[i].begin(), near_[i].end(),
                 [](Neighbour x, Neighbour y) { return x.index < y.index; });
@@ -439,6 +455,7 @@ class BinMeeting {
   const Transform middle_;  // the rotation to the bin's middle, for every shared end there
   std::vector<std::vector<Neighbour>>& near_;  // the first entries_.size() lists
   std::vector<Shared>& shared_;
+  BoxGridScratch& grid_;
 };
 
 }  // namespace
