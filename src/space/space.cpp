@@ -167,6 +167,19 @@ ImagePlan plan_images(const std::vector<Planned>& plan, const std::vector<PairSy
 // contact segments made at its own theta and its names from them (mapped_slice_as_computed).
 // An evaluated slice has its representative's pieces (null with no critical orientation,
 // where no slice is evaluated).
+// A stored slice keeps its vectors for the space's lifetime, and they grew by doubling (the
+// contact segments into a buffer sized by the previous slice): their spare capacity was a
+// seventh of a 600-feature space's memory.
+void release_spare_capacity(Slice& slice) {
+  slice.contact_segments.shrink_to_fit();
+  slice.realizable.shrink_to_fit();
+  slice.degenerate.shrink_to_fit();
+  slice.contact_graph.nodes.shrink_to_fit();
+  slice.contact_graph.edges.shrink_to_fit();
+  for (FreeComponent& c : slice.free_components)
+    for (std::vector<ContactPiece>& cycle : c.boundary) cycle.shrink_to_fit();
+}
+
 std::optional<Slice> image_of(const SpaceSlice& source, const Slice* representative,
                               const PairSymmetry& symmetry, double theta, ContactMaker& contacts) {
   const bool inherits = source.evaluated && representative && representative->coincident_pieces;
@@ -184,6 +197,7 @@ std::vector<SpaceSlice> compute_slices(const Pair& pair, const std::vector<Plann
   if (models) models->assign(plan.size(), std::nullopt);
   std::atomic<size_t> done = 0;
   const auto store = [&](size_t i, Slice slice, bool evaluated) {
+    release_spare_capacity(slice);
     out[i] = {plan[i].theta, plan[i].kind, plan[i].interval, std::move(slice), evaluated};
     if (progress) progress("slices", ++done, plan.size());
   };
