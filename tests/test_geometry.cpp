@@ -485,3 +485,44 @@ TEST(BoxPairs, TheGridDeclinesBoxesAsLargeAsTheirSpread) {
   EXPECT_FALSE(gridded);
   EXPECT_EQ(visits, 0);
 }
+
+// The chords' bounds hold the exact distance (and the sampled one) between them, for segments
+// and arcs up to a half turn, crossing or apart; past a half turn they bound nothing.
+TEST(Distance, ChordBoundsHoldTheDistance) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const auto random_curve = [&](double max_sweep) {
+    const Vec2 c{3.0 * u(rng), 3.0 * u(rng)};
+    const double r = 0.05 + 2.0 * std::fabs(u(rng));
+    if (u(rng) < -0.6) return make_segment(c, c + Vec2{r * u(rng), r * u(rng)});
+    return make_arc(c, r, kPi * u(rng), max_sweep * u(rng));
+  };
+  int arcs = 0, tight = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const Curve a = random_curve(kPi), b = random_curve(i % 10 == 0 ? kTwoPi : kPi);
+    if (a.is_segment() || b.is_segment()) continue;
+    const DistanceBounds bounds = chord_distance_bounds(a, b);
+    if (std::fabs(b.sweep) > kPi) {
+      EXPECT_EQ(bounds.lo, 0.0);
+      EXPECT_EQ(bounds.hi, std::numeric_limits<double>::infinity());
+      continue;
+    }
+    ++arcs;
+    const double exact = distance_between(a, b);
+    EXPECT_LE(bounds.lo, exact + 1e-12) << i;
+    EXPECT_GE(bounds.hi, exact - 1e-12) << i;
+    EXPECT_LE(bounds.lo, sampled_distance(a, b, 400) + 1e-12) << i;
+    tight += bounds.hi - bounds.lo < 0.1 ? 1 : 0;
+  }
+  EXPECT_GT(arcs, 1000);
+  EXPECT_GT(tight, arcs / 50);  // the bounds are not vacuous
+  // A half turn exactly, against its own chord: the distance is 0, the sagitta the radius.
+  const Curve half = make_arc({0.0, 0.0}, 1.0, 0.0, kPi);
+  const DistanceBounds own = chord_distance_bounds(half, make_segment(half.from, half.to));
+  EXPECT_EQ(own.lo, 0.0);
+  EXPECT_NEAR(own.hi, 1.0, 1e-12);
+  // Segments: both bounds are their distance.
+  const Curve s1 = make_segment({0, 0}, {1, 0}), s2 = make_segment({0, 2}, {1, 3});
+  EXPECT_EQ(chord_distance_bounds(s1, s2).lo, distance_between(s1, s2));
+  EXPECT_EQ(chord_distance_bounds(s1, s2).hi, distance_between(s1, s2));
+}

@@ -352,6 +352,14 @@ double distance_segment_segment(const Curve& a, const Curve& b);
 double distance_segment_arc(const Curve& segment, const Curve& arc);
 double distance_arc_arc(const Curve& a, const Curve& b);
 double distance_between(const Curve& a, const Curve& b);
+// Bounds on distance_between(a, b) from the curves' chords alone (no arc parameter, no
+// atan2): the chords' distance less and plus the sum of the sagittas. An arc of at most a
+// half turn lies over its chord, every point of one within its sagitta of the other's point
+// straight across. For an arc of more than a half turn, none: {0, infinity}.
+struct DistanceBounds {
+  double lo = 0.0, hi = std::numeric_limits<double>::infinity();
+};
+DistanceBounds chord_distance_bounds(const Curve& a, const Curve& b);
 // Largest distance from p to a point of the curve: an endpoint, or for an arc the point of
 // its circle opposite p, when the arc passes through it.
 double farthest_distance(const Curve& c, Vec2 p);

@@ -122,14 +122,24 @@ double circle_distance_bound(const Curve& a, const Curve& b) {
 }
 
 // Two families can meet within the bin only if their covers come within their margins. Ends
-// that close settle it at once (neighbours along the contact boundary share theirs).
-bool may_meet(const BinEntry& x, const BinEntry& y) {
+// that close settle it at once (neighbours along the contact boundary share theirs). Where an
+// arc is involved, bounds from the chords settle most pairs before the exact distance: on a
+// gear in a ring gear that distance, an atan2 per arc point tried, took 40% of the time of
+// the critical orientations.
+bool may_meet(const BinEntry& x, const BinEntry& y, double geometric) {
   if (!x.box.overlaps(y.box)) return false;
   const double reach = x.margin + y.margin;
   for (Vec2 p : {x.cover.from, x.cover.to})
     for (Vec2 q : {y.cover.from, y.cover.to})
       if (distance(p, q) <= reach) return true;
+  if (x.cover.is_segment() && y.cover.is_segment())
+    return distance_segment_segment(x.cover, y.cover) <= reach;
   if (circle_distance_bound(x.cover, y.cover) > reach) return false;
+  // Decided by the bounds only with the geometric epsilon to spare, far beyond the round-off
+  // of either distance, so that the exact distance would decide alike.
+  const DistanceBounds bounds = chord_distance_bounds(x.cover, y.cover);
+  if (bounds.hi <= reach - geometric) return true;
+  if (bounds.lo > reach + geometric) return false;
   return distance_between(x.cover, y.cover) <= reach;
 }
 
@@ -382,7 +392,7 @@ class BinMeeting {
   void find_pairs(std::vector<MeetingCandidate>& pairs) {
     const auto& e = entries_;
     const auto meet = [&](size_t i, size_t j) {
-      if (!may_meet(e[i], e[j])) return;
+      if (!may_meet(e[i], e[j], scope_.geometric)) return;
       near_[i].push_back({int(j)});
       near_[j].push_back({int(i)});
       pairs.push_back(ordered(e[i].family, e[j].family, -1, scope_.bin));

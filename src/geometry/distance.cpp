@@ -139,6 +139,23 @@ double distance_between(const Curve& a, const Curve& b) {
   return a.is_segment() ? distance_segment_arc(a, b) : distance_segment_arc(b, a);
 }
 
+namespace {
+// |bulge| = tan(sweep / 4) and sagitta = |bulge| chord / 2; -1 past a half turn (|bulge| > 1).
+double sagitta(const Curve& c) {
+  if (c.is_segment()) return 0.0;
+  const double b = std::fabs(c.bulge);
+  return b <= 1.0 ? 0.5 * b * distance(c.from, c.to) : -1.0;
+}
+}  // namespace
+
+DistanceBounds chord_distance_bounds(const Curve& a, const Curve& b) {
+  const double sa = sagitta(a), sb = sagitta(b);
+  if (sa < 0.0 || sb < 0.0) return {};
+  const double chords =
+      distance_segment_segment(make_segment(a.from, a.to), make_segment(b.from, b.to));
+  return {std::max(0.0, chords - sa - sb), chords + sa + sb};
+}
+
 // The distance from p to a point of the circle is largest at the point opposite p (through
 // the centre); elsewhere on an arc it grows towards that point, so it is largest at an end.
 double farthest_distance(const Curve& c, Vec2 p) {
