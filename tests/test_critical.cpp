@@ -2,14 +2,17 @@
 // sets, invariance under rotating either part, and the `cslice critical` command.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <random>
 
 #include "criticals/families.hpp"
 #include "criticals/trig.hpp"
 #include "cslice/critical.hpp"
+#include "cslice/space.hpp"
 #include "support/cli_run.hpp"
 #include "support/examples.hpp"
 #include "support/moved_examples.hpp"
@@ -354,6 +357,30 @@ TEST(CriticalExamples, CountsAreInThePapersRange) {
       EXPECT_GT(set.orientations[i].theta - set.orientations[i - 1].theta,
                 testkit::load_example(name).tol.critical_angle);
   }
+}
+
+// A triple point near the end of one of its three curves, and of that one only, is a
+// critical orientation of its own. On this random curved pair (BM_CriticalCurved/50's) three
+// contact arcs cross at a shallow angle 1.2e-5 rad after an endpoint event; their triple
+// point lies within the criticality tolerance of one arc's end, 8.7e-6 away, and was taken
+// for that endpoint event, though the realizable contact changes there.
+TEST(CriticalCompleteness, ATriplePointNearOneCurvesEndIsItsOwnEvent) {
+  std::optional<Pair> pair;
+  for (unsigned seed = 2026; !pair && seed < 2100; ++seed) {
+    std::mt19937 rng(seed + 50u);
+    const testkit::StarPairLoops loops = testkit::lobed_star_pair(rng, 50, 0.1, 0.5);
+    LoadResult r = parse_pair(testkit::pair_json("curved", {loops.moving}, {loops.fixed}), "c");
+    if (r.ok()) pair = std::move(*r.pair);
+  }
+  ASSERT_TRUE(pair);
+  const double before = -1.2459946, after = -1.2459942;
+  ASSERT_NE(realizable_labels(compute_slice(*pair, before)),
+            realizable_labels(compute_slice(*pair, after)));
+  const CriticalSet set = critical_orientations(*pair);
+  const bool reported = std::any_of(
+      set.orientations.begin(), set.orientations.end(),
+      [&](const CriticalOrientation& o) { return o.theta > before && o.theta < after; });
+  EXPECT_TRUE(reported) << "no critical orientation where the realizable contact changes";
 }
 
 // The candidate culling rests on this (docs/criticals.md, "Candidates"): every contact segment
