@@ -5,6 +5,11 @@
 //                                       unit grids, perfect fits, symmetric parts)
 //   cslice_stress --symmetric FIRST LAST random pairs with symmetries (testkit::symmetric_pair:
 //                                       quarter turns and mirrors, docs/symmetry.md)
+//   cslice_stress --stars N FIRST LAST  random lobed star pairs of N vertices per part, half the
+//                                       edges arcs (BM_CriticalCurved's kind; radii jittered
+//                                       10%, 30% on odd seeds): pairs of a few hundred
+//                                       features, where the small random pairs never reach
+//                                       (a 200-feature one showed a missed triple point)
 //   cslice_stress PAIR.json ...         pair files (designed fits, imported parts)
 //   --scale K                           every random and designed pair drawn K times larger
 //                                       first (points, radii and tolerance): the same pair in
@@ -31,6 +36,7 @@
 #include <algorithm>
 #include <iostream>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -46,6 +52,7 @@
 #include "support/mesh_census.hpp"
 #include "support/moved_examples.hpp"
 #include "support/random_parts.hpp"
+#include "support/random_polygons.hpp"
 #include "support/slice_oracle.hpp"
 #include "support/symmetric_pairs.hpp"
 
@@ -57,6 +64,8 @@ std::vector<std::string> g_files;
 unsigned g_first = 0, g_last = 0;
 unsigned g_designed_first = 0, g_designed_last = 0;
 unsigned g_symmetric_first = 0, g_symmetric_last = 0;
+unsigned g_stars_first = 0, g_stars_last = 0;
+int g_star_vertices = 0;
 double g_scale = 1.0, g_offset = 0.0;
 
 // Closed and consistently oriented once the seam at theta = pi is identified, as
@@ -116,6 +125,20 @@ bool check_pair(const Pair& pair, unsigned seed, const std::string& name) {
   return testkit::failures_so_far() == before;
 }
 
+// The --stars pair of a seed: the first of its draws (seed, seed + 1,000,003, ...) that the
+// reader accepts.
+testkit::RandomPair star_pair(unsigned seed) {
+  for (unsigned draw = seed, tries = 0; tries < 100; draw += 1000003u, ++tries) {
+    std::mt19937 rng(draw);
+    const testkit::StarPairLoops loops =
+        testkit::lobed_star_pair(rng, g_star_vertices, seed % 2 ? 0.3 : 0.1, 0.5);
+    const std::string json = testkit::pair_json("star", {loops.moving}, {loops.fixed});
+    LoadResult r = parse_pair(json, "star");
+    if (r.ok()) return {std::move(*r.pair), json};
+  }
+  throw std::runtime_error("--stars: no valid pair in 100 draws for seed " + std::to_string(seed));
+}
+
 // Checks the pairs make(seed) for seeds in [first, last), named "<kind> <seed>"; counts them.
 void check_seeds(unsigned first, unsigned last, testkit::RandomPair (*make)(unsigned),
                  const std::string& kind, int& checked, int& failed) {
@@ -144,6 +167,8 @@ TEST(Stress, Pairs) {
               failed);
   check_seeds(g_symmetric_first, g_symmetric_last, testkit::symmetric_pair, "symmetric", checked,
               failed);
+  check_seeds(g_stars_first, g_stars_last, star_pair,
+              "star of " + std::to_string(g_star_vertices) + " vertices, seed", checked, failed);
   for (const std::string& file : g_files) {
     LoadResult r = load_pair(file);
     if (!r.ok()) {
@@ -185,6 +210,15 @@ int main(int argc, char** argv) {
       g_designed_first = unsigned(std::stoul(argv[i + 1]));
       g_designed_last = unsigned(std::stoul(argv[i + 2]));
       i += 2;
+    } else if (arg == "--stars" && i + 3 < argc) {
+      g_star_vertices = std::stoi(argv[i + 1]);
+      g_stars_first = unsigned(std::stoul(argv[i + 2]));
+      g_stars_last = unsigned(std::stoul(argv[i + 3]));
+      i += 3;
+      if (g_star_vertices < 3) {
+        std::cerr << "--stars takes at least 3 vertices per part\n";
+        return 2;
+      }
     } else if (arg == "--symmetric" && i + 2 < argc) {
       g_symmetric_first = unsigned(std::stoul(argv[i + 1]));
       g_symmetric_last = unsigned(std::stoul(argv[i + 2]));
@@ -194,10 +228,10 @@ int main(int argc, char** argv) {
     }
   }
   if (g_files.empty() && g_first >= g_last && g_designed_first >= g_designed_last &&
-      g_symmetric_first >= g_symmetric_last) {
+      g_symmetric_first >= g_symmetric_last && g_stars_first >= g_stars_last) {
     std::cerr << "usage: cslice_stress [--scale K] [--offset X] [--prove-blocked always|never] "
                  "--seeds FIRST LAST | --designed FIRST LAST | --symmetric FIRST LAST | "
-                 "PAIR.json ...\n";
+                 "--stars N FIRST LAST | PAIR.json ...\n";
     return 2;
   }
   return RUN_ALL_TESTS();
