@@ -7,6 +7,7 @@
 //                              fundamental domain of the pair's symmetries (docs/symmetry.md)
 //   BM_CriticalCurved/<n>      random lobed stars, n vertices per part (4n features): each
 //                              vertex's radius jittered by 10%, half the edges arcs
+//   BM_CriticalGear/<n>        a gear of n teeth in a ring gear of 2n (24n features)
 // Counters: features, families (feature pairs that touch at some orientation), equations
 // solved, criticalities kept, orientations after grouping, and the time per family^2 and per
 // family^3 (the growth of candidate pairs and triples).
@@ -84,6 +85,22 @@ void BM_CriticalCurved(benchmark::State& state) {
   run_critical(state, curved_pair(static_cast<int>(state.range(0))));
 }
 
+// A gear of n teeth in a ring gear of 2n (the proportions of
+// examples/drawings/gear-in-ring.dxf, scaled with n): 24n features, symmetric under turns by
+// 2 pi / n and mirrors: the critical orientations of an eighth of a turn are searched.
+const cslice::Pair& gear_pair(int teeth) {
+  static std::map<int, cslice::Pair> cache;
+  if (auto it = cache.find(teeth); it != cache.end()) return it->second;
+  const double k = teeth / 8.0;
+  const std::string json = cslice::testkit::gear_in_ring_json(
+      teeth, 1.0 + 4.0 * k, 1.0 + 4.0 * k - 2.25, 2 * teeth, 3.0 + 4.0 * k, 5.25 + 4.0 * k, 0.001);
+  return cache.emplace(teeth, cslice::testkit::parse_or_throw(json, "gear")).first->second;
+}
+
+void BM_CriticalGear(benchmark::State& state) {
+  run_critical(state, gear_pair(static_cast<int>(state.range(0))));
+}
+
 }  // namespace
 
 BENCHMARK(BM_CriticalCurved)
@@ -93,6 +110,8 @@ BENCHMARK(BM_CriticalCurved)
     ->Arg(50)
     ->Unit(benchmark::kMillisecond)
     ->Complexity();
+// Gears of 8 and 16 teeth in rings of 16 and 32: 192 and 384 features.
+BENCHMARK(BM_CriticalGear)->Arg(8)->Arg(16)->Unit(benchmark::kMillisecond);
 // About 400 features: one timed run, reported on its own.
 BENCHMARK(BM_CriticalCurved)
     ->Name("BM_CriticalCurved400")
