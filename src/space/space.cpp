@@ -161,15 +161,9 @@ ImagePlan plan_images(const std::vector<Planned>& plan, const std::vector<PairSy
   return out;
 }
 
-// The image at theta of a stored slice under `symmetry`, or nothing where it must be
-// computed. A slice whose pieces lie along coincident contact segments names them by the
-// lowest id, in the order the contact segments are made at its theta: its image takes the
-// contact segments made at its own theta and its names from them (mapped_slice_as_computed).
-// An evaluated slice has its representative's pieces (null with no critical orientation,
-// where no slice is evaluated).
 // A stored slice keeps its vectors for the space's lifetime, and they grew by doubling (the
-// contact segments into a buffer sized by the previous slice): their spare capacity was a
-// seventh of a 600-feature space's memory.
+// contact segments into a buffer sized by the previous slice): giving back their spare
+// capacity took the 600-feature smooth star pair's peak from 3.89 to 3.76 GB.
 void release_spare_capacity(Slice& slice) {
   slice.contact_segments.shrink_to_fit();
   slice.realizable.shrink_to_fit();
@@ -180,6 +174,12 @@ void release_spare_capacity(Slice& slice) {
     for (std::vector<ContactPiece>& cycle : c.boundary) cycle.shrink_to_fit();
 }
 
+// The image at theta of a stored slice under `symmetry`, or nothing where it must be
+// computed. A slice whose pieces lie along coincident contact segments names them by the
+// lowest id, in the order the contact segments are made at its theta: its image takes the
+// contact segments made at its own theta and its names from them (mapped_slice_as_computed).
+// An evaluated slice has its representative's pieces (null with no critical orientation,
+// where no slice is evaluated).
 std::optional<Slice> image_of(const SpaceSlice& source, const Slice* representative,
                               const PairSymmetry& symmetry, double theta, ContactMaker& contacts) {
   const bool inherits = source.evaluated && representative && representative->coincident_pieces;

@@ -247,4 +247,14 @@ Pair parse_or_throw(const std::string& json, const std::string& source) {
   return std::move(*r.pair);
 }
 
+Pair curved_star_pair(int vertices) {
+  for (unsigned seed = 2026; seed < 2100; ++seed) {
+    std::mt19937 rng(seed + static_cast<unsigned>(vertices));
+    const StarPairLoops loops = lobed_star_pair(rng, vertices, 0.1, 0.5);
+    LoadResult r = parse_pair(pair_json("curved", {loops.moving}, {loops.fixed}), "curved");
+    if (r.ok()) return std::move(*r.pair);
+  }
+  throw std::runtime_error("curved_star_pair: no seed gave a valid pair");
+}
+
 }  // namespace cslice::testkit

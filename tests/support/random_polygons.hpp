@@ -114,4 +114,9 @@ std::string pair_json(const std::string& name, const std::vector<LoopVertices>& 
 // the reader rejects it.
 Pair parse_or_throw(const std::string& json, const std::string& source);
 
+// The random curved pair of bench_critical's BM_CriticalCurved/<vertices>: lobed_star_pair
+// with radii jittered 10% and half the edges arcs, drawn by std::mt19937(seed + vertices) for
+// the first seed from 2026 whose pair the reader accepts (4 * vertices features).
+Pair curved_star_pair(int vertices);
+
 }  // namespace cslice::testkit
