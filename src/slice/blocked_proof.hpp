@@ -57,10 +57,13 @@ class BlockedProof {
   };
 
  private:
+  // A slab in its contact segment's frame (x along it from its start, y across it into the
+  // blocked side): low < y < high, cross(start_side, (x, y)) < 0 and
+  // cross(end_side, (x - length, y)) > 0, as in MaterialRegion with the margin taken off.
   struct Slab {
     Vec2 from, along, across;  // along: unit direction; across: unit normal to its left
-    double length, depth;
-    Vec2 start_side, end_side;  // the region's corner bisectors, as in MaterialRegion
+    double length, low, high;
+    Vec2 start_side, end_side;
     int segment;
   };
   struct CellRange {
@@ -72,7 +75,7 @@ class BlockedProof {
                  double margin);
   void index_slabs(const std::vector<ContactSegment>& segments);
   void order_targets(const std::vector<ContactSegment>& segments);
-  bool covered(const Curve& target, int id, double margin);
+  bool covered(const Curve& target, int id);
 
   std::vector<Slab> slabs_;
   std::vector<Box> slab_boxes_;
@@ -80,11 +83,13 @@ class BlockedProof {
   // cell_slabs_[cell_start_[c] .. cell_start_[c + 1]), with their boxes alongside.
   std::vector<int> cell_start_, cell_slabs_, fill_;
   std::vector<Box> cell_boxes_;
+  std::vector<CellRange> slab_cells_;        // per slab: the cells its box overlaps
+  std::vector<size_t> target_cells_;         // per line target, in order: its cell
   std::vector<int> stamp_;                   // per slab: the last target that tested it
   std::vector<int> target_start_, targets_;  // line targets, by the cell of their midpoint
-  std::vector<Span> spans_;
+  std::vector<Span> spans_;  // on the target in hand: the spans found so far, merged
   Vec2 origin_;
-  double cell_ = 1.0;
+  double cell_ = 1.0, per_cell_ = 1.0;
   int columns_ = 0, rows_ = 0;
   int hint_ = -1;  // the slab that covered the last target covered by one slab
 };
