@@ -220,11 +220,21 @@ class ContactBuilder {
 
 // Fixed features bucketed by the directions of their outward normals, so that each moving
 // feature meets only the fixed ones whose normals can oppose its own: the pairs that can
-// touch at all. Buckets split the circle evenly; an interval goes into every bucket it
-// overlaps (widened by the angular epsilon, as the interval tests are inclusive). About one
-// bucket per fixed feature: on random star pairs (100 and 300 vertices, smooth and rough)
-// twice as many cost 1-3% more per one-shot slice, marking each interval in more buckets,
-// and half as many helped the rough ones but cost the smooth ones the false candidates.
+// touch at all. Buckets split the circle evenly; an interval covers the run of buckets it
+// overlaps (widened by the angular epsilon, as the interval tests are inclusive), and a
+// fixed feature is a candidate when its run meets the query's. About one bucket per fixed
+// feature: on random star pairs (100 and 300 vertices, smooth and rough) twice as many cost
+// 1-3% more per one-shot slice, and half as many helped the rough ones but cost the smooth
+// ones the false candidates.
+//
+// A feature whose run is short (an edge, a vertex of a smooth contour) is listed in each of
+// its buckets, and a query reads the lists of its own buckets. A long run (a vertex where a
+// rough contour turns) would be read once per bucket the two runs share, which cost most of
+// the contacts on rough parts (docs/performance.md, eighteenth session). Long runs are found
+// by where they start instead: the runs at most w buckets long that meet the query's run
+// [first, first + count) start in [first - w + 1, first + count). So they are kept in classes
+// of length (up to 16, 32, 64, ... buckets), each grouped by cells of starts as wide as its
+// longest run, and a query reads each class's cells over that window: each run once.
 class NormalIndex {
  public:
   NormalIndex(const std::vector<ContactFeature>& fixed, double angular_eps)
@@ -234,15 +244,8 @@ class NormalIndex {
     seen_.assign((fixed.size() + 63) / 64, 0);
     for (size_t i = 0; i < fixed.size(); ++i)
       if (fixed[i].can_touch) ranges_[i] = range_of(fixed[i].normals);
-    // The buckets' features in one array, bucket by bucket, each in feature order (a counting
-    // sort: one allocation, not one per bucket, which dominated building the index per slice).
-    bucket_start_.assign(bucket_count_ + 1, 0);
-    for (const Range& r : ranges_) for_each_bucket(r, [&](size_t b) { ++bucket_start_[b + 1]; });
-    for (size_t b = 0; b < bucket_count_; ++b) bucket_start_[b + 1] += bucket_start_[b];
-    bucket_items_.resize(bucket_start_.back());
-    std::vector<int> fill(bucket_start_.begin(), bucket_start_.end() - 1);
-    for (size_t i = 0; i < fixed.size(); ++i)
-      for_each_bucket(ranges_[i], [&](size_t b) { bucket_items_[fill[b]++] = int(i); });
+    list_short_runs();
+    index_long_runs();
     // Only features that can touch are ever asked for theirs (and a vertex that cannot
     // touch has none: see ContactMaker).
     normals_.resize(fixed.size());
@@ -250,12 +253,12 @@ class NormalIndex {
       if (fixed[i].can_touch) normals_[i] = unit_vector(fixed[i].normals.lo);
     if (fixed.size() <= kScanLimit) {
       masks_.assign(bucket_count_, 0);
-      for (size_t b = 0; b < bucket_count_; ++b)
-        for (int i : bucket(b)) masks_[b] |= uint64_t{1} << i;
+      for (size_t i = 0; i < fixed.size(); ++i)
+        for_each_bucket(ranges_[i], [&](size_t b) { masks_[b] |= uint64_t{1} << i; });
     }
   }
 
-  // Every fixed feature whose bucket range meets the interval, once each, in feature order:
+  // Every fixed feature whose bucket run meets the interval's, once each, in feature order:
   // the output (segment ids) then follows the features' order, whatever the bucketing.
   // With few features (few_features()), only those whose bit is set in `allowed`.
   void candidates(const AngleInterval& normals, std::vector<int>& out,
@@ -272,25 +275,21 @@ class NormalIndex {
       for (bits &= allowed; bits != 0; bits &= bits - 1) out.push_back(std::countr_zero(bits));
       return;
     }
-    // A feature lies in every bucket its range meets: marked once each in a bitmap of the
-    // features, then read back in feature order, word by word over the words marked
-    // (sorting the gathered lists cost more than the contacts themselves on rough parts).
-    std::vector<uint64_t>& seen = seen_;
-    std::vector<size_t>& touched = touched_;
-    touched.clear();
+    // Marked in a bitmap of the features, then read back in feature order, word by word over
+    // the words marked (sorting the gathered lists cost more than the contacts themselves on
+    // rough parts).
+    touched_.clear();
     for_each_bucket_range(r, [&](size_t from, size_t to) {
       for (size_t b = from; b < to; ++b)
-        for (int i : bucket(b)) {
-          uint64_t& word = seen[size_t(i) / 64];
-          if (word == 0) touched.push_back(size_t(i) / 64);
-          word |= uint64_t{1} << (size_t(i) % 64);
-        }
+        for (int i : bucket(b)) mark(i);
     });
-    std::sort(touched.begin(), touched.end());
-    for (size_t w : touched) {
-      for (uint64_t bits = seen[w]; bits != 0; bits &= bits - 1)
+    for (const Run& run : whole_circle_) mark(run.feature);
+    for (const Class& cls : classes_) find_in_class(cls, r);
+    std::sort(touched_.begin(), touched_.end());
+    for (size_t w : touched_) {
+      for (uint64_t bits = seen_[w]; bits != 0; bits &= bits - 1)
         out.push_back(int(64 * w + size_t(std::countr_zero(bits))));
-      seen[w] = 0;
+      seen_[w] = 0;
     }
   }
 
@@ -302,10 +301,20 @@ class NormalIndex {
 
  private:
   static constexpr size_t kScanLimit = 64;
+  // Runs of at most this many buckets are listed in each of their buckets.
+  static constexpr size_t kShortRun = 8;
 
   // Buckets first, first + 1, ..., count of them, modulo the bucket count; none when empty.
   struct Range {
     size_t first = 0, count = 0;
+  };
+  struct Run {
+    int first, count, feature;
+  };
+  // The long runs of up to 2^c buckets: those starting in cell k (buckets k 2^c to
+  // (k + 1) 2^c - 1) are runs_[cells_[first_cell + k] .. cells_[first_cell + k + 1]).
+  struct Class {
+    size_t c, first_cell;
   };
 
   Range range_of(const AngleInterval& a) const {
@@ -331,16 +340,108 @@ class NormalIndex {
     if (end > n) fn(size_t{0}, end - n);
   }
 
+  // The class of a run of `count` buckets: the least c with count <= 2^c.
+  static size_t class_of(size_t count) { return size_t(std::bit_width(count - 1)); }
+
+  // The short runs, listed bucket by bucket in one array (a counting sort: one allocation,
+  // not one per bucket), each bucket's in feature order.
+  void list_short_runs() {
+    auto is_short = [](const Range& r) { return r.count > 0 && r.count <= kShortRun; };
+    bucket_start_.assign(bucket_count_ + 1, 0);
+    for (const Range& r : ranges_)
+      if (is_short(r)) for_each_bucket(r, [&](size_t b) { ++bucket_start_[b + 1]; });
+    for (size_t b = 0; b < bucket_count_; ++b) bucket_start_[b + 1] += bucket_start_[b];
+    bucket_items_.resize(size_t(bucket_start_.back()));
+    std::vector<int> fill(bucket_start_.begin(), bucket_start_.end() - 1);
+    for (size_t i = 0; i < ranges_.size(); ++i)
+      if (is_short(ranges_[i]))
+        for_each_bucket(ranges_[i], [&](size_t b) { bucket_items_[size_t(fill[b]++)] = int(i); });
+  }
+
+  // The long runs, grouped by class and within a class c by cells of 2^c buckets where they
+  // start (one counting sort); runs round the whole circle apart.
+  void index_long_runs() {
+    const size_t n = bucket_count_, classes = class_of(n) + 1;
+    std::vector<size_t> base(classes + 1, 0);  // class c's cells: base[c] .. base[c + 1]
+    for (size_t c = 0; c < classes; ++c) base[c + 1] = base[c] + ((n - 1) >> c) + 1;
+    auto cell_of = [&](const Range& r) {
+      const size_t c = class_of(r.count);
+      return base[c] + (r.first >> c);
+    };
+    auto is_long = [&](const Range& r) { return r.count > kShortRun && r.count < n; };
+    if (std::none_of(ranges_.begin(), ranges_.end(),
+                     [&](const Range& r) { return r.count > kShortRun; }))
+      return;  // smooth contours: all short
+    cells_.assign(base[classes] + 1, 0);
+    std::vector<int> per_class(classes, 0);
+    for (const Range& r : ranges_)
+      if (is_long(r)) {
+        ++cells_[cell_of(r) + 1];
+        ++per_class[class_of(r.count)];
+      }
+    for (size_t k = 0; k + 1 < cells_.size(); ++k) cells_[k + 1] += cells_[k];
+    runs_.resize(size_t(cells_.back()));
+    std::vector<int> fill(cells_.begin(), cells_.end() - 1);
+    for (size_t i = 0; i < ranges_.size(); ++i) {
+      const Range& r = ranges_[i];
+      const Run run{int(r.first), int(r.count), int(i)};
+      if (r.count == n)
+        whole_circle_.push_back(run);
+      else if (is_long(r))
+        runs_[size_t(fill[cell_of(r)]++)] = run;
+    }
+    for (size_t c = 0; c < classes; ++c)
+      if (per_class[c] > 0) classes_.push_back({c, base[c]});
+  }
+
   std::span<const int> bucket(size_t b) const {
     return {bucket_items_.data() + bucket_start_[b], bucket_items_.data() + bucket_start_[b + 1]};
   }
 
+  // Marks the runs of a class that meet r: those starting in [r.first - w + 1, r.first +
+  // r.count) modulo the bucket count, w = 2^c, read from the cells holding those starts.
+  void find_in_class(const Class& cls, const Range& r) const {
+    const size_t n = bucket_count_, w = std::min(n, size_t{1} << cls.c);
+    const size_t length = r.count + w - 1;
+    const int* cells = cells_.data() + cls.first_cell;
+    auto read = [&](size_t lo, size_t hi) {  // runs starting in the cells of buckets [lo, hi]
+      for (int i = cells[lo >> cls.c], end = cells[(hi >> cls.c) + 1]; i < end; ++i)
+        if (meets(runs_[size_t(i)], r)) mark(runs_[size_t(i)].feature);
+    };
+    if (length >= n) return read(0, n - 1);
+    const size_t from = (r.first + n - (w - 1)) % n, to = from + length - 1;
+    if (to < n) return read(from, to);
+    // The window wraps: its two parts, or all cells once when they share one.
+    if (((to - n) >> cls.c) >= (from >> cls.c)) return read(0, n - 1);
+    read(from, n - 1);
+    read(0, to - n);
+  }
+
+  // Whether two runs of buckets meet, round the circle: one holds the other's first bucket.
+  bool meets(const Run& run, const Range& r) const {
+    const size_t n = bucket_count_, first = size_t(run.first);
+    const size_t to_query = r.first >= first ? r.first - first : r.first + n - first;
+    const size_t to_run = first >= r.first ? first - r.first : first + n - r.first;
+    return to_query < size_t(run.count) || to_run < r.count;
+  }
+
+  void mark(int feature) const {
+    uint64_t& word = seen_[size_t(feature) / 64];
+    if (word == 0) touched_.push_back(size_t(feature) / 64);
+    word |= uint64_t{1} << (size_t(feature) % 64);
+  }
+
   size_t bucket_count_;
-  std::vector<int> bucket_start_, bucket_items_;  // bucket b: items [start[b], start[b + 1])
-  std::vector<Range> ranges_;                     // per fixed feature; empty when it cannot touch
-  std::vector<Vec2> normals_;           // per fixed feature that can touch, unit_vector(normals.lo)
-  std::vector<uint64_t> masks_;         // per bucket, its features as bits, when there are few
-  mutable std::vector<uint64_t> seen_;  // candidates' bitmap of fixed features, left all zero
+  // The short runs in bucket b: bucket_items_[bucket_start_[b] .. bucket_start_[b + 1]).
+  std::vector<int> bucket_start_, bucket_items_;
+  std::vector<Range> ranges_;      // per fixed feature; empty when it cannot touch
+  std::vector<Run> runs_;          // long: by class, then by cell of start
+  std::vector<Class> classes_;     // the classes that have runs
+  std::vector<int> cells_;         // per class, where its cells' runs start in runs_ (see Class)
+  std::vector<Run> whole_circle_;  // runs round the whole circle: met by every query
+  std::vector<Vec2> normals_;      // per fixed feature that can touch, unit_vector(normals.lo)
+  std::vector<uint64_t> masks_;    // per bucket, its features as bits, when there are few
+  mutable std::vector<uint64_t> seen_;   // candidates' bitmap of fixed features, left all zero
   mutable std::vector<size_t> touched_;  // the words of seen_ a query marked
   double width_ = 1.0;
   double eps_;
