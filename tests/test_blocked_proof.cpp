@@ -42,6 +42,14 @@ Pair rough_star_pair(int n, unsigned seed, double arc_fraction = 0.0) {
   }
 }
 
+// A gear of 8 or 16 teeth in a ring gear of twice as many (bench_critical's gears): straight
+// flanks between arcs, whose arc/arc contacts are proven by one slab or by pieces.
+Pair gear_pair(int teeth) {
+  const double k = teeth / 8.0;
+  return parse(testkit::gear_in_ring_json(teeth, 1.0 + 4.0 * k, 1.0 + 4.0 * k - 2.25, 2 * teeth,
+                                          3.0 + 4.0 * k, 5.25 + 4.0 * k, 0.001));
+}
+
 // Restores the automatic mode when a test ends, however it ends.
 struct ModeGuard {
   ~ModeGuard() { set_blocked_proof_mode(BlockedProofMode::automatic); }
@@ -159,12 +167,14 @@ TEST(MaterialRegions, RegionsLieInsideTheMaterialWithTheMargin) {
 }
 
 // Every contact segment proven blocked is blocked all along by the direct placement test,
-// and so are its points moved by the margin (less a hair) to either side.
+// and so are its points moved by the margin (less a hair) to either side: across a line,
+// along the radius of an arc (33 points, so that every eighth of an arc has inner points).
 TEST(BlockedProof, ProvenSegmentsAreBlocked) {
   std::vector<Pair> pairs;
   for (int n : {30, 60, 100}) pairs.push_back(rough_star_pair(n, 200 + unsigned(n)));
   for (int n : {60, 150}) pairs.push_back(rough_star_pair(n, 250 + unsigned(n), 0.25));
-  int proven_count = 0, by_arcs = 0;
+  for (int teeth : {8, 16}) pairs.push_back(gear_pair(teeth));
+  int proven_count = 0, by_arcs = 0, arcs = 0;
   for (const Pair& pair : pairs) {
     PlacementTester tester(pair);
     const double margin = proof_margin(pair);
@@ -175,13 +185,15 @@ TEST(BlockedProof, ProvenSegmentsAreBlocked) {
         if (!proven[size_t(s.id)]) continue;
         ++proven_count;
         by_arcs += s.kind == ContactKind::arc_segment || s.kind == ContactKind::segment_arc;
-        const Vec2 across = perp_left(normalized(s.curve.to - s.curve.from));
-        for (int k = 0; k <= 8; ++k) {
-          const Vec2 p = lerp(s.curve.from, s.curve.to, k / 8.0);
+        arcs += s.curve.is_arc() ? 1 : 0;
+        for (int k = 0; k <= 32; ++k) {
+          const Vec2 p = point_at(s.curve, k / 32.0);
+          const Vec2 across = s.curve.is_arc() ? normalized(p - s.curve.center)
+                                               : perp_left(normalized(s.curve.to - s.curve.from));
           for (double side : {0.0, 0.99, -0.99}) {
             const Vec2 q = p + side * margin * across;
             ASSERT_TRUE(tester.blocked({q.x, q.y, theta}))
-                << "segment " << s.id << " at theta " << theta << ", " << k << "/8";
+                << "segment " << s.id << " at theta " << theta << ", " << k << "/32";
           }
         }
       }
@@ -189,6 +201,7 @@ TEST(BlockedProof, ProvenSegmentsAreBlocked) {
   }
   EXPECT_GT(proven_count, 1000);  // the rough stars prove most of theirs
   EXPECT_GT(by_arcs, 50);         // arcs on segments too
+  EXPECT_GT(arcs, 500);           // and arc contact segments, the gears' most of all
 }
 
 // Slices computed with the proof and without agree: free components (count, boundedness,
@@ -205,6 +218,7 @@ TEST(BlockedProof, SlicesAreTheSameWithAndWithoutIt) {
   for (int i = 0; i < 20; ++i)
     pairs.push_back(testkit::random_pair(rng, 4 + i % 6, 5 + i % 7, i % 3 == 0).pair);
   for (unsigned seed = 1; seed <= 60; ++seed) pairs.push_back(testkit::designed_pair(seed).pair);
+  for (int teeth : {8, 16}) pairs.push_back(gear_pair(teeth));
   int left_out = 0;
   for (size_t p = 0; p < pairs.size(); ++p) {
     const Pair& pair = pairs[p];
@@ -238,6 +252,62 @@ TEST(BlockedProof, SlicesAreTheSameWithAndWithoutIt) {
     }
   }
   EXPECT_GT(left_out, 2000);
+}
+
+// Arcs against slabs built by hand: two vertex/segment contacts along y = 0 whose fixed edges'
+// regions (depth 1, corner sides vertical) make the slabs 0 < x < 6 and 4 < x < 10 (margin
+// 0.01 taken off their heights). An arc held by one slab is proven; one whose ends lie in a
+// slab but whose middle rises above it is not; one crossing from one slab into the other,
+// held by neither whole, is proven through its halves.
+TEST(BlockedProof, ArcsAreHeldWholeOrByPieces) {
+  const double margin = 0.01;
+  PairRegions regions;
+  regions.fixed.assign(2, MaterialRegion{1.0, {0.0, 1.0}, {0.0, 1.0}});
+  auto line = [](int id, int fixed, Vec2 from, Vec2 to) {
+    ContactSegment s;
+    s.id = id;
+    s.fixed_feature = fixed;
+    s.kind = ContactKind::vertex_segment;
+    s.curve = make_segment(from, to);
+    return s;
+  };
+  // The arc of the circle through (x0, y_ends) and (x1, y_ends) rising to y_top, counterclockwise
+  // from its right end.
+  auto arc = [](int id, double x0, double x1, double y_ends, double y_top) {
+    const double half = 0.5 * (x1 - x0), rise = y_top - y_ends;
+    const double radius = (half * half + rise * rise) / (2.0 * rise);
+    const Vec2 center{0.5 * (x0 + x1), y_top - radius};
+    const double start = std::atan2(y_ends - center.y, x1 - center.x);
+    ContactSegment s;
+    s.id = id;
+    s.kind = ContactKind::arc_arc;
+    s.curve = make_arc(center, radius, start, kPi - 2.0 * start);
+    return s;
+  };
+  std::vector<ContactSegment> segments = {
+      line(0, 0, {0.0, 0.0}, {6.0, 0.0}), line(1, 1, {4.0, 0.0}, {10.0, 0.0}),
+      arc(2, 1.0, 5.0, 0.3, 0.6),    // inside the first slab
+      arc(3, 6.5, 9.5, 0.5, 1.2),    // ends inside the second, middle above it
+      arc(4, 2.0, 8.0, 0.3, 0.5),    // across both: each half inside one
+      arc(5, 2.0, 8.0, 0.3, 0.995),  // across both, its top within the margin of y = 1
+  };
+  // Two thirds of circles, open on the left: one reaching past the slab's bottom and top
+  // (not proven), one whose missing third would have crossed x = 0 (proven).
+  segments.push_back(segments[2]);
+  segments.back().id = 6;
+  segments.back().curve = make_arc({3.0, 0.5}, 0.55, -2.0 * kPi / 3.0, 4.0 * kPi / 3.0);
+  segments.push_back(segments[2]);
+  segments.back().id = 7;
+  segments.back().curve = make_arc({0.3, 0.5}, 0.4, -2.0 * kPi / 3.0, 4.0 * kPi / 3.0);
+  BlockedProof proof;
+  std::vector<char> proven;
+  proof.find(segments, regions, margin, proven);
+  EXPECT_TRUE(proven[2]);
+  EXPECT_FALSE(proven[3]);
+  EXPECT_TRUE(proven[4]);
+  EXPECT_FALSE(proven[5]);
+  EXPECT_FALSE(proven[6]);
+  EXPECT_TRUE(proven[7]);
 }
 
 // The automatic mode looks only where there are more than two contact segments per feature:

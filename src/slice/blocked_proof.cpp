@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace cslice {
 namespace {
@@ -54,9 +55,91 @@ bool add_covers_unit(std::vector<BlockedProof::Span>& merged, BlockedProof::Span
   return s.lo < 0.0 && s.hi > 1.0;
 }
 
+// An arc not held whole by one slab is tried as two halves, those as halves again, and so
+// on, this many times (pieces of an eighth). On gears two to four halvings cost the same and
+// prove nearly every arc that 17 sample points find inside slabs (docs/performance.md,
+// eighteenth session).
+constexpr int kArcHalvings = 3;
+
 bool is_line_target(const ContactSegment& s) {
   return !s.is_point && s.curve.is_segment();
 }
+
+// Where a target's cell is found: a line's midpoint (as it was before arcs were targets, so
+// lines are visited in the same order), an arc's box's centre.
+Vec2 target_point(const Curve& c) {
+  if (c.is_segment()) return 0.5 * (c.from + c.to);
+  const Box b = bounding_box(c);
+  return 0.5 * (b.lo + b.hi);
+}
+
+}  // namespace
+
+// An arc target, or a piece of one, as its support computations want it: the circle, its
+// ends, and the unit vectors from the centre to its ends in counterclockwise order (lo to hi).
+struct BlockedProof::ArcTarget {
+  Vec2 center, from, to, lo, hi;
+  double radius, start_angle, sweep;
+  bool full, over_half;  // the whole circle; more than half of it
+
+  explicit ArcTarget(const Curve& c)
+      : ArcTarget(c.center, c.radius, c.start_angle, c.sweep, c.from, c.to) {}
+  ArcTarget(Vec2 center, double radius, double start_angle, double sweep, Vec2 from, Vec2 to)
+      : center(center),
+        from(from),
+        to(to),
+        radius(radius),
+        start_angle(start_angle),
+        sweep(sweep),
+        full(std::fabs(sweep) >= kTwoPi),
+        over_half(std::fabs(sweep) > kPi) {
+    const Vec2 a = (from - center) * (1.0 / radius), b = (to - center) * (1.0 / radius);
+    lo = sweep > 0.0 ? a : b;
+    hi = sweep > 0.0 ? b : a;
+  }
+
+  // Its two halves, which share the middle point.
+  std::pair<ArcTarget, ArcTarget> halves() const {
+    const double half = 0.5 * sweep;
+    const Vec2 middle = center + radius * unit_vector(start_angle + half);
+    return {ArcTarget(center, radius, start_angle, half, from, middle),
+            ArcTarget(center, radius, start_angle + half, half, middle, to)};
+  }
+
+  // Its ends, and its circle's extreme points in x and y that it holds.
+  Box box() const {
+    Box b;
+    b.add(from);
+    b.add(to);
+    for (const Vec2 axis : {Vec2{1.0, 0.0}, Vec2{0.0, 1.0}, Vec2{-1.0, 0.0}, Vec2{0.0, -1.0}})
+      if (holds(axis)) b.add(center + radius * axis);
+    return b;
+  }
+
+  // Whether the arc holds the point of its circle in direction d (unit). Where round-off
+  // decides (d along an end's direction), either answer moves an extreme by a negligible
+  // amount: the end lies there too.
+  bool holds(Vec2 d) const {
+    if (full) return true;
+    if (!over_half) return cross(lo, d) >= 0.0 && cross(d, hi) >= 0.0;
+    return !(cross(hi, d) > 0.0 && cross(d, lo) > 0.0);  // not in the gap, under half a turn
+  }
+
+  // The least and greatest of dot(p - origin, n) + k over the arc's points p (n unit): at an
+  // end, or where the circle's normal is n or -n if the arc holds that point.
+  std::pair<double, double> extremes(Vec2 origin, Vec2 n, double k) const {
+    const double at_from = dot(from - origin, n) + k, at_to = dot(to - origin, n) + k;
+    const double at_center = dot(center - origin, n) + k;
+    double least = std::min(at_from, at_to), greatest = std::max(at_from, at_to);
+    if (holds(n)) greatest = std::max(greatest, at_center + radius);
+    if (holds(-1.0 * n)) least = std::min(least, at_center - radius);
+    return {least, greatest};
+  }
+};
+
+namespace {
+
+using ArcTarget = BlockedProof::ArcTarget;
 
 }  // namespace
 
@@ -101,9 +184,12 @@ void BlockedProof::find(const std::vector<ContactSegment>& segments, const PairR
   index_slabs(segments);
   order_targets(segments);
   stamp_.assign(slabs_.size(), -1);
+  query_ = -1;
   hint_ = -1;
-  for (int id : targets_)
-    if (covered(segments[size_t(id)].curve, id)) proven[size_t(id)] = 1;
+  for (int id : targets_) {
+    const Curve& c = segments[size_t(id)].curve;
+    if (c.is_segment() ? covered(c, id) : covered_arc(ArcTarget(c), 0)) proven[size_t(id)] = 1;
+  }
 }
 
 // One slab per contact segment of a disc feature (vertex or arc) on a straight one, either
@@ -159,11 +245,14 @@ void BlockedProof::index_slabs(const std::vector<ContactSegment>& segments) {
     all.add(b);
     extent += 0.5 * (b.hi.x - b.lo.x + b.hi.y - b.lo.y);
   }
-  for (const ContactSegment& s : segments)
+  for (const ContactSegment& s : segments) {
     if (is_line_target(s)) {
       all.add(s.curve.from);
       all.add(s.curve.to);
+    } else if (!s.is_point) {
+      all.add(bounding_box(s.curve));
     }
+  }
   const double n = double(slabs_.size());
   const double w = all.hi.x - all.lo.x, h = all.hi.y - all.lo.y;
   // At least as wide as a quarter of the slabs' number of cells would fill the whole box.
@@ -195,24 +284,25 @@ void BlockedProof::index_slabs(const std::vector<ContactSegment>& segments) {
   }
 }
 
-// The line targets by the cell of their midpoint, rows walked back and forth: neighbours
-// follow each other, and the slab that covered one is tried first on the next.
+// The targets (every contact segment but a point) by the cell of target_point, rows walked
+// back and forth: neighbours follow each other, and the slab that covered one is tried first
+// on the next.
 void BlockedProof::order_targets(const std::vector<ContactSegment>& segments) {
   auto cell_of = [&](const Curve& c) {
     Box mid;
-    mid.add(0.5 * (c.from + c.to));
+    mid.add(target_point(c));
     const CellRange r = cells(mid);
     return size_t(r.y0) * size_t(columns_) + size_t(r.y0 % 2 == 0 ? r.x0 : columns_ - 1 - r.x0);
   };
   target_start_.assign(size_t(columns_) * size_t(rows_) + 1, 0);
   target_cells_.clear();
   for (const ContactSegment& s : segments)
-    if (is_line_target(s)) ++target_start_[target_cells_.emplace_back(cell_of(s.curve)) + 1];
+    if (!s.is_point) ++target_start_[target_cells_.emplace_back(cell_of(s.curve)) + 1];
   for (size_t c = 1; c < target_start_.size(); ++c) target_start_[c] += target_start_[c - 1];
   targets_.resize(size_t(target_start_.back()));
   size_t k = 0;
   for (const ContactSegment& s : segments)
-    if (is_line_target(s)) targets_[size_t(target_start_[target_cells_[k++]]++)] = s.id;
+    if (!s.is_point) targets_[size_t(target_start_[target_cells_[k++]]++)] = s.id;
 }
 
 namespace {
@@ -234,7 +324,56 @@ inline bool inside(const Slab& s, Vec2 p0, Vec2 p1, BlockedProof::Span& span, bo
                 span.hi, whole);
 }
 
+// Whether the slab holds the whole arc: the least and greatest of each of its three strips'
+// functions over the arc within the strip's bounds (the functions of `inside`, in world
+// terms: a corner side v bounds the slab along the normal v.x across - v.y along).
+template <class Slab>
+bool holds_arc(const Slab& s, const ArcTarget& arc) {
+  const auto [low, high] = arc.extremes(s.from, s.across, 0.0);
+  if (!(low > s.low && high < s.high)) return false;
+  const Vec2 start_normal = s.start_side.x * s.across - s.start_side.y * s.along;
+  if (!(arc.extremes(s.from, start_normal, 0.0).second < 0.0)) return false;
+  const Vec2 end_normal = s.end_side.x * s.across - s.end_side.y * s.along;
+  return arc.extremes(s.from, end_normal, s.end_side.y * s.length).first > 0.0;
+}
+
 }  // namespace
+
+// Calls stop(j) once for each slab j whose box overlaps b, until it returns true; whether
+// it did.
+template <class Stop>
+bool BlockedProof::any_slab_near(const Box& b, Stop stop) {
+  const CellRange r = cells(b);
+  ++query_;
+  for (int y = r.y0; y <= r.y1; ++y)
+    for (int x = r.x0; x <= r.x1; ++x) {
+      const size_t cell = size_t(y) * size_t(columns_) + size_t(x);
+      for (int k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
+        if (!cell_boxes_[size_t(k)].overlaps(b)) continue;
+        const int j = cell_slabs_[size_t(k)];
+        if (stamp_[size_t(j)] == query_) continue;  // met in an earlier cell
+        stamp_[size_t(j)] = query_;
+        if (stop(j)) return true;
+      }
+    }
+  return false;
+}
+
+// Whether one slab holds the whole arc, or else each of its halves, and so on down to
+// pieces of 1 / 2^kArcHalvings of it: pieces that share their ends, each held whole by a
+// slab, cover it with the margin all along.
+bool BlockedProof::covered_arc(const ArcTarget& arc, int halvings) {
+  if (hint_ >= 0 && holds_arc(slabs_[size_t(hint_)], arc)) return true;
+  const bool held = any_slab_near(arc.box(), [&](int j) {
+    if (!holds_arc(slabs_[size_t(j)], arc)) return false;
+    hint_ = j;
+    return true;
+  });
+  if (held) return true;
+  if (halvings == kArcHalvings) return false;
+  const auto [first, second] = arc.halves();
+  return covered_arc(first, halvings + 1) && covered_arc(second, halvings + 1);
+}
 
 // Whether the target is covered end to end by the slabs of other contact segments. One slab
 // often covers it whole; else the spans of the slabs near it are merged as they are found,
@@ -249,26 +388,16 @@ bool BlockedProof::covered(const Curve& target, int id) {
   Box b;
   b.add(p0);
   b.add(p1);
-  const CellRange r = cells(b);
   spans_.clear();
-  for (int y = r.y0; y <= r.y1; ++y)
-    for (int x = r.x0; x <= r.x1; ++x) {
-      const size_t cell = size_t(y) * size_t(columns_) + size_t(x);
-      for (int k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
-        if (!cell_boxes_[size_t(k)].overlaps(b)) continue;
-        const int j = cell_slabs_[size_t(k)];
-        if (stamp_[size_t(j)] == id) continue;  // met in an earlier cell
-        stamp_[size_t(j)] = id;
-        const Slab& s = slabs_[size_t(j)];
-        if (s.segment == id || !inside(s, p0, p1, span, whole)) continue;
-        if (whole) {
-          hint_ = j;
-          return true;
-        }
-        if (add_covers_unit(spans_, span)) return true;
-      }
+  return any_slab_near(b, [&](int j) {
+    const Slab& s = slabs_[size_t(j)];
+    if (s.segment == id || !inside(s, p0, p1, span, whole)) return false;
+    if (whole) {
+      hint_ = j;
+      return true;
     }
-  return false;
+    return add_covers_unit(spans_, span);
+  });
 }
 
 }  // namespace cslice

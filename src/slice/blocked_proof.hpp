@@ -6,11 +6,13 @@
 // part's) runs along the translations where one point of the vertex or arc touches the
 // segment; swept to its blocked side through that segment's region, it becomes a slab of
 // translations where that point lies inside the region, more than `margin` from the other
-// part's boundary below the slab's depth less margin: blocked space with that margin. A line
-// contact segment covered end to end by other segments' slabs lies in blocked space with the margin
-// all along, so leaving it out of the arrangement only merges blocked faces: no free point, and no
-// piece of the free space's boundary, lies within the margin of it. It stays in the slice's contact
-// segments.
+// part's boundary below the slab's depth less margin: blocked space with that margin. A
+// contact segment covered end to end by other segments' slabs lies in blocked space with the
+// margin all along, so leaving it out of the arrangement only merges blocked faces: no free
+// point, and no piece of the free space's boundary, lies within the margin of it. It stays in
+// the slice's contact segments. A line is covered by the spans of several slabs together; an
+// arc (arc/arc and vertex/arc contacts: the tips and roots of gear teeth) by one slab, or
+// its halves (or their halves, a few times over) each by one.
 //
 // Where contact segments greatly outnumber features (rough contours, whose contact segments
 // cross in a band of shallow overlap along the boundary of the free space) most of them are
@@ -55,6 +57,7 @@ class BlockedProof {
   struct Span {  // open, along a target: 0 and 1 at its ends
     double lo, hi;
   };
+  struct ArcTarget;  // an arc target or a piece of one (blocked_proof.cpp)
 
  private:
   // A slab in its contact segment's frame (x along it from its start, y across it into the
@@ -76,6 +79,9 @@ class BlockedProof {
   void index_slabs(const std::vector<ContactSegment>& segments);
   void order_targets(const std::vector<ContactSegment>& segments);
   bool covered(const Curve& target, int id);
+  bool covered_arc(const ArcTarget& arc, int halvings);
+  template <class Stop>
+  bool any_slab_near(const Box& b, Stop stop);
 
   std::vector<Slab> slabs_;
   std::vector<Box> slab_boxes_;
@@ -83,10 +89,11 @@ class BlockedProof {
   // cell_slabs_[cell_start_[c] .. cell_start_[c + 1]), with their boxes alongside.
   std::vector<int> cell_start_, cell_slabs_, fill_;
   std::vector<Box> cell_boxes_;
-  std::vector<CellRange> slab_cells_;        // per slab: the cells its box overlaps
-  std::vector<size_t> target_cells_;         // per line target, in order: its cell
-  std::vector<int> stamp_;                   // per slab: the last target that tested it
-  std::vector<int> target_start_, targets_;  // line targets, by the cell of their midpoint
+  std::vector<CellRange> slab_cells_;  // per slab: the cells its box overlaps
+  std::vector<size_t> target_cells_;   // per target, in order: its cell
+  std::vector<int> stamp_;  // per slab: the last query (a target, or a piece of an arc) to test it
+  int query_ = -1;
+  std::vector<int> target_start_, targets_;  // targets, by the cell of their box's centre
   std::vector<Span> spans_;  // on the target in hand: the spans found so far, merged
   Vec2 origin_;
   double cell_ = 1.0, per_cell_ = 1.0;
