@@ -78,16 +78,12 @@ void BM_CriticalCurved(benchmark::State& state) {
   run_critical(state, curved_pair(static_cast<int>(state.range(0))));
 }
 
-// A gear of n teeth in a ring gear of 2n (the proportions of
-// examples/drawings/gear-in-ring.dxf, scaled with n): 24n features, symmetric under turns by
-// 2 pi / n and mirrors: the critical orientations of an eighth of a turn are searched.
+// A gear of n teeth in a ring gear of 2n (testkit::gear_pair): 24n features, symmetric under
+// turns by 2 pi / n and mirrors: the critical orientations of an eighth of a turn are searched.
 const cslice::Pair& gear_pair(int teeth) {
   static std::map<int, cslice::Pair> cache;
   if (auto it = cache.find(teeth); it != cache.end()) return it->second;
-  const double k = teeth / 8.0;
-  const std::string json = cslice::testkit::gear_in_ring_json(
-      teeth, 1.0 + 4.0 * k, 1.0 + 4.0 * k - 2.25, 2 * teeth, 3.0 + 4.0 * k, 5.25 + 4.0 * k, 0.001);
-  return cache.emplace(teeth, cslice::testkit::parse_or_throw(json, "gear")).first->second;
+  return cache.emplace(teeth, cslice::testkit::gear_pair(teeth)).first->second;
 }
 
 void BM_CriticalGear(benchmark::State& state) {

@@ -17,6 +17,8 @@
 //   BM_CgalRoughStar/<n>        CGAL on those
 //   BM_SliceCurved/<e>          smooth stars with half their edges arcs, e edges per part
 //                               (2e features per part)
+//   BM_SlicerGear/<n>           a gear of n teeth in a ring of 2n, as BM_SlicerExample
+//   BM_SlicerGearUnproven/<n>   the same with no contact segment proven blocked
 // Counters: k = contact segments, free = free components, bounded = bounded ones, features =
 // both parts' features, ns_per_klogk = time / (k log2 k). Pairs are built and parsed once,
 // outside the timed loops; CGAL's input polygons too.
@@ -124,8 +126,7 @@ void BM_SliceExample(benchmark::State& state, const std::string& name) {
 // One Slicer for all iterations, as the sliced space uses one per thread: the features'
 // contact data, the placement tester and the slices' working buffers are kept, so this is
 // the cost of one more slice, averaged over orientations all around.
-void BM_SlicerExample(benchmark::State& state, const std::string& name) {
-  const cslice::Pair pair = load_example(name);
+void run_slicer_around(benchmark::State& state, const cslice::Pair& pair) {
   cslice::Slicer slicer(pair);
   constexpr int kThetas = 64;
   int k = 0;
@@ -135,6 +136,27 @@ void BM_SlicerExample(benchmark::State& state, const std::string& name) {
     benchmark::DoNotOptimize(slice.blocked_area);
   }
   state.counters["features"] = features(pair);
+}
+
+void BM_SlicerExample(benchmark::State& state, const std::string& name) {
+  run_slicer_around(state, load_example(name));
+}
+
+// The same for gears in ring gears (testkit::gear_pair; 24n features, most contact segments
+// arcs at the teeth's tips and roots), with the contact segments proven blocked left out as
+// the slice does, and with none left out: what the proof saves on arcs.
+const cslice::Pair& gear_pair(int teeth) {
+  static std::map<int, cslice::Pair> cache;
+  if (auto it = cache.find(teeth); it != cache.end()) return it->second;
+  return cache.emplace(teeth, cslice::testkit::gear_pair(teeth)).first->second;
+}
+void BM_SlicerGear(benchmark::State& state) {
+  run_slicer_around(state, gear_pair(int(state.range(0))));
+}
+void BM_SlicerGearUnproven(benchmark::State& state) {
+  cslice::set_blocked_proof_mode(cslice::BlockedProofMode::never);
+  run_slicer_around(state, gear_pair(int(state.range(0))));
+  cslice::set_blocked_proof_mode(cslice::BlockedProofMode::automatic);
 }
 
 void BM_SliceStar(benchmark::State& state) {
@@ -226,6 +248,8 @@ BENCHMARK(BM_SliceRoughStarUnproven)->Arg(300)->Arg(1000)->Unit(benchmark::kMill
 BENCHMARK(BM_CgalRoughStar)->Arg(100)->Arg(300)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CgalRoughStar)->Arg(1000)->Iterations(1)->Unit(benchmark::kMillisecond);
 
+BENCHMARK(BM_SlicerGear)->Arg(8)->Arg(16)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SlicerGearUnproven)->Arg(8)->Arg(16)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SliceCurved)
     ->Arg(250)
     ->Arg(800)

@@ -42,14 +42,6 @@ Pair rough_star_pair(int n, unsigned seed, double arc_fraction = 0.0) {
   }
 }
 
-// A gear of 8 or 16 teeth in a ring gear of twice as many (bench_critical's gears): straight
-// flanks between arcs, whose arc/arc contacts are proven by one slab or by pieces.
-Pair gear_pair(int teeth) {
-  const double k = teeth / 8.0;
-  return parse(testkit::gear_in_ring_json(teeth, 1.0 + 4.0 * k, 1.0 + 4.0 * k - 2.25, 2 * teeth,
-                                          3.0 + 4.0 * k, 5.25 + 4.0 * k, 0.001));
-}
-
 // Restores the automatic mode when a test ends, however it ends.
 struct ModeGuard {
   ~ModeGuard() { set_blocked_proof_mode(BlockedProofMode::automatic); }
@@ -173,7 +165,7 @@ TEST(BlockedProof, ProvenSegmentsAreBlocked) {
   std::vector<Pair> pairs;
   for (int n : {30, 60, 100}) pairs.push_back(rough_star_pair(n, 200 + unsigned(n)));
   for (int n : {60, 150}) pairs.push_back(rough_star_pair(n, 250 + unsigned(n), 0.25));
-  for (int teeth : {8, 16}) pairs.push_back(gear_pair(teeth));
+  for (int teeth : {8, 16}) pairs.push_back(testkit::gear_pair(teeth));
   int proven_count = 0, by_arcs = 0, arcs = 0;
   for (const Pair& pair : pairs) {
     PlacementTester tester(pair);
@@ -218,7 +210,7 @@ TEST(BlockedProof, SlicesAreTheSameWithAndWithoutIt) {
   for (int i = 0; i < 20; ++i)
     pairs.push_back(testkit::random_pair(rng, 4 + i % 6, 5 + i % 7, i % 3 == 0).pair);
   for (unsigned seed = 1; seed <= 60; ++seed) pairs.push_back(testkit::designed_pair(seed).pair);
-  for (int teeth : {8, 16}) pairs.push_back(gear_pair(teeth));
+  for (int teeth : {8, 16}) pairs.push_back(testkit::gear_pair(teeth));
   int left_out = 0;
   for (size_t p = 0; p < pairs.size(); ++p) {
     const Pair& pair = pairs[p];

@@ -257,4 +257,11 @@ Pair curved_star_pair(int vertices) {
   throw std::runtime_error("curved_star_pair: no seed gave a valid pair");
 }
 
+Pair gear_pair(int teeth) {
+  const double k = teeth / 8.0;
+  return parse_or_throw(gear_in_ring_json(teeth, 1.0 + 4.0 * k, 1.0 + 4.0 * k - 2.25, 2 * teeth,
+                                          3.0 + 4.0 * k, 5.25 + 4.0 * k, 0.001),
+                        "gear");
+}
+
 }  // namespace cslice::testkit

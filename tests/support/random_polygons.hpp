@@ -119,4 +119,9 @@ Pair parse_or_throw(const std::string& json, const std::string& source);
 // the first seed from 2026 whose pair the reader accepts (4 * vertices features).
 Pair curved_star_pair(int vertices);
 
+// bench_critical's gear pair: a gear of `teeth` teeth in a ring gear of twice as many, with the
+// proportions of examples/drawings/gear-in-ring.dxf scaled with the teeth (24 * teeth features,
+// symmetric under turns by 2 pi / teeth and mirrors; tolerance 0.001).
+Pair gear_pair(int teeth);
+
 }  // namespace cslice::testkit
