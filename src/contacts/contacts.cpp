@@ -150,11 +150,16 @@ class ContactBuilder {
     const double n_angle = m.normals.lo + theta_ + kPi;
     if (!interval_contains(f.normals, n_angle, pair_.tol.angular)) return;
     Moving& mm = moving(m);
-    if (!mm.has_normal) {
-      mm.normal = unit_vector(n_angle);  // turns with theta: once per slice and feature
-      mm.has_normal = true;
+    // A vertex (radius 0) touches at its centre whatever the normal: no sine and cosine for
+    // it, which were a twentieth of a polygon pair's slice.
+    Vec2 touch = f.center;
+    if (f.rho != 0.0) {
+      if (!mm.has_normal) {
+        mm.normal = unit_vector(n_angle);  // turns with theta: once per slice and feature
+        mm.has_normal = true;
+      }
+      touch = f.center + f.rho * mm.normal;
     }
-    const Vec2 touch = f.center + f.rho * mm.normal;
     emit(m, f, contact_kind(m, f), make_segment(touch - mm.from, touch - mm.to));
   }
 
