@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "geometry/clip.hpp"
+
 namespace cslice {
 namespace {
 
@@ -18,30 +20,19 @@ Vec2 unit_direction(const Curve& c) {
   return normalized(c.to - c.from);
 }
 
-// Narrows [lo, hi] to the t where v0 + t (v1 - v0) lies strictly between a and b; an empty
-// result has lo >= hi.
-void narrow(double v0, double v1, double a, double b, double& lo, double& hi) {
-  const double dv = v1 - v0;
-  if (dv == 0.0) {
-    if (!(v0 > a && v0 < b)) hi = lo;
-    return;
-  }
-  double ta = (a - v0) / dv, tb = (b - v0) / dv;
-  if (dv < 0.0) std::swap(ta, tb);
-  lo = std::max(lo, ta);
-  hi = std::min(hi, tb);
-}
-
 // The lowest height of the part of segment (p, q) (in the edge's frame) that lies above the
 // edge's line and between its corner bisectors pushed out by margin; infinity when none.
 double lowest_inside(Vec2 p, Vec2 q, double length, const MaterialRegion& r, double margin) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   const Vec2 end{length, 0.0};
   double lo = 0.0, hi = 1.0;
-  narrow(p.y, q.y, 0.0, inf, lo, hi);
-  narrow(cross(r.start_side, p), cross(r.start_side, q), -inf, margin, lo, hi);
-  narrow(cross(r.end_side, p - end), cross(r.end_side, q - end), -margin, inf, lo, hi);
-  if (!(lo < hi)) return inf;
+  bool whole = true;
+  if (!narrow_to_band(p.y, q.y, 0.0, inf, lo, hi, whole) ||
+      !narrow_to_band(cross(r.start_side, p), cross(r.start_side, q), -inf, margin, lo, hi,
+                      whole) ||
+      !narrow_to_band(cross(r.end_side, p - end), cross(r.end_side, q - end), -margin, inf, lo, hi,
+                      whole))
+    return inf;
   return std::min(p.y + lo * (q.y - p.y), p.y + hi * (q.y - p.y));
 }
 

@@ -7,6 +7,8 @@
 #include <limits>
 #include <utility>
 
+#include "geometry/clip.hpp"
+
 namespace cslice {
 namespace {
 
@@ -17,23 +19,6 @@ std::atomic<BlockedProofMode> g_mode{BlockedProofMode::automatic};
 // slower, at 2.0 even, at 2.6 15 to 20% faster, at 4 16% faster, at 14.5 3.4 times faster;
 // docs/performance.md, sixteenth session).
 constexpr size_t kSegmentsPerFeatureWorthProving = 2;
-
-// Narrows [lo, hi] (parameters along a target line, 0 and 1 at its ends) to where a value
-// running linearly from v0 to v1 lies strictly between a and b; false when nothing is left.
-// `whole` stays true while every constraint so far holds at both ends, and so (the slab
-// being convex) all along the target. Inline, as `inside` is: the two are the proof's
-// innermost step, and as calls they took a tenth of its instructions.
-inline bool narrow(double v0, double v1, double a, double b, double& lo, double& hi, bool& whole) {
-  if (v0 > a && v0 < b && v1 > a && v1 < b) return true;
-  whole = false;
-  if ((v0 <= a && v1 <= a) || (v0 >= b && v1 >= b)) return false;
-  const double dv = v1 - v0;  // not 0: the ends lie on different sides of a or of b
-  double ta = (a - v0) / dv, tb = (b - v0) / dv;
-  if (dv < 0.0) std::swap(ta, tb);
-  lo = std::max(lo, ta);
-  hi = std::min(hi, tb);
-  return lo < hi;
-}
 
 // Adds an open span to `merged` (disjoint open spans sorted by lo, merged where they overlap;
 // spans that only touch leave their common point uncovered) and returns whether they now
@@ -317,11 +302,11 @@ inline bool inside(const Slab& s, Vec2 p0, Vec2 p1, BlockedProof::Span& span, bo
   const Vec2 end{s.length, 0.0};
   span = {-inf, inf};
   whole = true;
-  return narrow(q0.y, q1.y, s.low, s.high, span.lo, span.hi, whole) &&
-         narrow(cross(s.start_side, q0), cross(s.start_side, q1), -inf, 0.0, span.lo, span.hi,
-                whole) &&
-         narrow(cross(s.end_side, q0 - end), cross(s.end_side, q1 - end), 0.0, inf, span.lo,
-                span.hi, whole);
+  return narrow_to_band(q0.y, q1.y, s.low, s.high, span.lo, span.hi, whole) &&
+         narrow_to_band(cross(s.start_side, q0), cross(s.start_side, q1), -inf, 0.0, span.lo,
+                        span.hi, whole) &&
+         narrow_to_band(cross(s.end_side, q0 - end), cross(s.end_side, q1 - end), 0.0, inf, span.lo,
+                        span.hi, whole);
 }
 
 // Whether the slab holds the whole arc: the least and greatest of each of its three strips'
