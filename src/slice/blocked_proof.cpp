@@ -50,8 +50,7 @@ bool is_line_target(const ContactSegment& s) {
   return !s.is_point && s.curve.is_segment();
 }
 
-// Where a target's cell is found: a line's midpoint (as it was before arcs were targets, so
-// lines are visited in the same order), an arc's box's centre.
+// Where a target's cell is found: a line's midpoint, an arc's box's centre.
 Vec2 target_point(const Curve& c) {
   if (c.is_segment()) return 0.5 * (c.from + c.to);
   const Box b = bounding_box(c);
@@ -117,7 +116,7 @@ struct BlockedProof::ArcTarget {
     const double at_center = dot(center - origin, n) + k;
     double least = std::min(at_from, at_to), greatest = std::max(at_from, at_to);
     if (holds(n)) greatest = std::max(greatest, at_center + radius);
-    if (holds(-1.0 * n)) least = std::min(least, at_center - radius);
+    if (holds(-n)) least = std::min(least, at_center - radius);
     return {least, greatest};
   }
 };
