@@ -249,17 +249,18 @@ class NormalIndex {
     seen_.assign((fixed.size() + 63) / 64, 0);
     for (size_t i = 0; i < fixed.size(); ++i)
       if (fixed[i].can_touch) ranges_[i] = range_of(fixed[i].normals);
-    list_short_runs();
-    index_long_runs();
     // Only features that can touch are ever asked for theirs (and a vertex that cannot
     // touch has none: see ContactMaker).
     normals_.resize(fixed.size());
     for (size_t i = 0; i < fixed.size(); ++i)
       if (fixed[i].can_touch) normals_[i] = unit_vector(fixed[i].normals.lo);
-    if (fixed.size() <= kScanLimit) {
+    if (few_features()) {
       masks_.assign(bucket_count_, 0);
       for (size_t i = 0; i < fixed.size(); ++i)
         for_each_bucket(ranges_[i], [&](size_t b) { masks_[b] |= uint64_t{1} << i; });
+    } else {
+      list_short_runs();
+      index_long_runs();
     }
   }
 
@@ -270,7 +271,7 @@ class NormalIndex {
                   uint64_t allowed = ~uint64_t{0}) const {
     out.clear();
     const Range r = range_of(normals);
-    if (ranges_.size() <= kScanLimit) {
+    if (few_features()) {
       // Few features: each bucket holds them as a bitmask; the features meeting r are
       // the union of its buckets' masks, read back in feature order.
       uint64_t bits = 0;
@@ -378,12 +379,8 @@ class NormalIndex {
                      [&](const Range& r) { return r.count > kShortRun; }))
       return;  // smooth contours: all short
     cells_.assign(base[classes] + 1, 0);
-    std::vector<int> per_class(classes, 0);
     for (const Range& r : ranges_)
-      if (is_long(r)) {
-        ++cells_[cell_of(r) + 1];
-        ++per_class[class_of(r.count)];
-      }
+      if (is_long(r)) ++cells_[cell_of(r) + 1];
     for (size_t k = 0; k + 1 < cells_.size(); ++k) cells_[k + 1] += cells_[k];
     runs_.resize(size_t(cells_.back()));
     std::vector<int> fill(cells_.begin(), cells_.end() - 1);
@@ -395,8 +392,8 @@ class NormalIndex {
       else if (is_long(r))
         runs_[size_t(fill[cell_of(r)]++)] = run;
     }
-    for (size_t c = 0; c < classes; ++c)
-      if (per_class[c] > 0) classes_.push_back({c, base[c]});
+    for (size_t c = 0; c < classes; ++c)  // its runs: runs_[cells_[base[c]] .. cells_[base[c + 1]])
+      if (cells_[base[c]] < cells_[base[c + 1]]) classes_.push_back({c, base[c]});
   }
 
   std::span<const int> bucket(size_t b) const {
