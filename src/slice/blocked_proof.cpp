@@ -59,45 +59,28 @@ Vec2 target_point(const Curve& c) {
 
 }  // namespace
 
-// An arc target, or a piece of one, as its support computations want it: the circle, its
-// ends, and the unit vectors from the centre to its ends in counterclockwise order (lo to hi).
+// An arc target, or a piece of one, as its support computations want it: the arc, and the
+// unit vectors from its centre to its ends in counterclockwise order (lo to hi).
 struct BlockedProof::ArcTarget {
-  Vec2 center, from, to, lo, hi;
-  double radius, start_angle, sweep;
+  Curve arc;
+  Vec2 lo, hi;
   bool full, over_half;  // the whole circle; more than half of it
 
   explicit ArcTarget(const Curve& c)
-      : ArcTarget(c.center, c.radius, c.start_angle, c.sweep, c.from, c.to) {}
-  ArcTarget(Vec2 center, double radius, double start_angle, double sweep, Vec2 from, Vec2 to)
-      : center(center),
-        from(from),
-        to(to),
-        radius(radius),
-        start_angle(start_angle),
-        sweep(sweep),
-        full(std::fabs(sweep) >= kTwoPi),
-        over_half(std::fabs(sweep) > kPi) {
-    const Vec2 a = (from - center) * (1.0 / radius), b = (to - center) * (1.0 / radius);
-    lo = sweep > 0.0 ? a : b;
-    hi = sweep > 0.0 ? b : a;
+      : arc(c), full(c.is_full_circle()), over_half(std::fabs(c.sweep) > kPi) {
+    const Vec2 a = (c.from - c.center) * (1.0 / c.radius), b = (c.to - c.center) * (1.0 / c.radius);
+    lo = c.sweep > 0.0 ? a : b;
+    hi = c.sweep > 0.0 ? b : a;
   }
 
   // Its two halves, which share the middle point.
   std::pair<ArcTarget, ArcTarget> halves() const {
-    const double half = 0.5 * sweep;
-    const Vec2 middle = center + radius * unit_vector(start_angle + half);
-    return {ArcTarget(center, radius, start_angle, half, from, middle),
-            ArcTarget(center, radius, start_angle + half, half, middle, to)};
-  }
-
-  // Its ends, and its circle's extreme points in x and y that it holds.
-  Box box() const {
-    Box b;
-    b.add(from);
-    b.add(to);
-    for (const Vec2 axis : {Vec2{1.0, 0.0}, Vec2{0.0, 1.0}, Vec2{-1.0, 0.0}, Vec2{0.0, -1.0}})
-      if (holds(axis)) b.add(center + radius * axis);
-    return b;
+    const double half = 0.5 * arc.sweep, middle_angle = arc.start_angle + half;
+    const Vec2 middle = arc.center + arc.radius * unit_vector(middle_angle);
+    return {
+        ArcTarget(
+            make_arc_between(arc.center, arc.radius, arc.start_angle, half, arc.from, middle)),
+        ArcTarget(make_arc_between(arc.center, arc.radius, middle_angle, half, middle, arc.to))};
   }
 
   // Whether the arc holds the point of its circle in direction d (unit). Where round-off
@@ -112,11 +95,11 @@ struct BlockedProof::ArcTarget {
   // The least and greatest of dot(p - origin, n) + k over the arc's points p (n unit): at an
   // end, or where the circle's normal is n or -n if the arc holds that point.
   std::pair<double, double> extremes(Vec2 origin, Vec2 n, double k) const {
-    const double at_from = dot(from - origin, n) + k, at_to = dot(to - origin, n) + k;
-    const double at_center = dot(center - origin, n) + k;
+    const double at_from = dot(arc.from - origin, n) + k, at_to = dot(arc.to - origin, n) + k;
+    const double at_center = dot(arc.center - origin, n) + k;
     double least = std::min(at_from, at_to), greatest = std::max(at_from, at_to);
-    if (holds(n)) greatest = std::max(greatest, at_center + radius);
-    if (holds(-n)) least = std::min(least, at_center - radius);
+    if (holds(n)) greatest = std::max(greatest, at_center + arc.radius);
+    if (holds(-n)) least = std::min(least, at_center - arc.radius);
     return {least, greatest};
   }
 };
@@ -229,14 +212,8 @@ void BlockedProof::index_slabs(const std::vector<ContactSegment>& segments) {
     all.add(b);
     extent += 0.5 * (b.hi.x - b.lo.x + b.hi.y - b.lo.y);
   }
-  for (const ContactSegment& s : segments) {
-    if (is_line_target(s)) {
-      all.add(s.curve.from);
-      all.add(s.curve.to);
-    } else if (!s.is_point) {
-      all.add(bounding_box(s.curve));
-    }
-  }
+  for (const ContactSegment& s : segments)
+    if (!s.is_point) all.add(bounding_box(s.curve));
   const double n = double(slabs_.size());
   const double w = all.hi.x - all.lo.x, h = all.hi.y - all.lo.y;
   // At least as wide as a quarter of the slabs' number of cells would fill the whole box.
@@ -348,7 +325,7 @@ bool BlockedProof::any_slab_near(const Box& b, Stop stop) {
 // slab, cover it with the margin all along.
 bool BlockedProof::covered_arc(const ArcTarget& arc, int halvings) {
   if (hint_ >= 0 && holds_arc(slabs_[size_t(hint_)], arc)) return true;
-  const bool held = any_slab_near(arc.box(), [&](int j) {
+  const bool held = any_slab_near(arc_bounding_box(arc.arc), [&](int j) {
     if (!holds_arc(slabs_[size_t(j)], arc)) return false;
     hint_ = j;
     return true;
