@@ -137,6 +137,37 @@ TEST(SegmentSegment, CollinearEndToEndIsATouch) {
   EXPECT_NEAR(x.hits[0].tb0, 0.0, 1e-12);
 }
 
+// Contact segments meeting end to end in a chain share that end bit for bit: the one hit is
+// exactly there, at parameters exactly 0 or 1 (no round-off from solving for the crossing),
+// in whichever order the pair comes; a shallow meeting still goes by the collinear rule.
+TEST(SegmentSegment, ASharedEndIsTheExactHit) {
+  const Vec2 p{0.1, 0.7};  // 0.1 and 0.7 are not representable: a solved crossing rounds
+  const Curve a = make_segment({-2.3, 0.3}, p), b = make_segment(p, {1.9, 4.1});
+  for (bool swapped : {false, true}) {
+    const Intersection x = swapped ? intersect(b, a, kEps) : intersect(a, b, kEps);
+    ASSERT_EQ(x.kind, IntersectionKind::one);
+    ASSERT_EQ(x.count, 1);
+    EXPECT_EQ(x.hits[0].point, p);
+    EXPECT_EQ(x.hits[0].ta0, swapped ? 0.0 : 1.0);
+    EXPECT_EQ(x.hits[0].tb0, swapped ? 1.0 : 0.0);
+    EXPECT_FALSE(x.hits[0].is_tangent);
+  }
+  // Both starting at p, and both ending there.
+  const Curve c = make_segment(p, {0.4, -3.0});
+  const Intersection from_from = intersect(b, c, kEps);
+  ASSERT_EQ(from_from.count, 1);
+  EXPECT_EQ(from_from.hits[0].ta0, 0.0);
+  EXPECT_EQ(from_from.hits[0].tb0, 0.0);
+  const Intersection to_to = intersect(a, reversed(c), kEps);
+  ASSERT_EQ(to_to.count, 1);
+  EXPECT_EQ(to_to.hits[0].ta0, 1.0);
+  EXPECT_EQ(to_to.hits[0].tb0, 1.0);
+  // Folded back within eps of itself: a shared piece, not a point.
+  const Intersection fold =
+      intersect(make_segment({0, 0}, {1, 0}), make_segment({1, 0}, {0.5, 1e-12}), kEps);
+  EXPECT_EQ(fold.kind, IntersectionKind::overlapping);
+}
+
 TEST(SegmentSegment, EndpointWithinEpsilonOfTheOtherCounts) {
   // A T-junction whose stem stops 1e-12 short of the bar, at a shallow angle.
   const Intersection x =

@@ -92,6 +92,28 @@ TEST(PartFeatures, NormalsOnMixedShape) {
   expect_vec(smooth->normal_in, smooth->normal_out);
 }
 
+// The normal cones as angles, which the contact step buckets by: a segment's normal, a convex
+// corner's quarter turn, a reflex corner's negative turn; the same after the part is placed.
+TEST(PartFeatures, NormalAnglesOnMixedShape) {
+  const Part p = moving_part(kMixedShape);
+  const Feature* bottom = find_feature(p, FeatureKind::segment, 0, 0);
+  EXPECT_NEAR(bottom->normal_angle, -kPi / 2, 1e-15);
+  EXPECT_EQ(bottom->turn, 0.0);
+  const Feature* corner = find_feature(p, FeatureKind::vertex, 0, 0);
+  EXPECT_NEAR(std::remainder(corner->normal_angle - kPi, kTwoPi), 0.0, 1e-15);  // -pi or pi
+  EXPECT_NEAR(corner->turn, kPi / 2, 1e-15);
+  const Feature* reflex = find_feature(p, FeatureKind::vertex, 0, 3);
+  EXPECT_NEAR(reflex->normal_angle, kPi / 2, 1e-15);
+  EXPECT_NEAR(reflex->turn, -kPi / 2, 1e-15);
+  const Part turned = placed(p, Pose{3.0, -1.0, 0.5});
+  for (size_t i = 0; i < p.features.size(); ++i) {
+    const Feature &f = p.features[i], &g = turned.features[i];
+    if (f.kind == FeatureKind::arc) continue;
+    EXPECT_NEAR(std::remainder(g.normal_angle - f.normal_angle - 0.5, kTwoPi), 0.0, 1e-12);
+    EXPECT_NEAR(g.turn, f.turn, 1e-12);
+  }
+}
+
 TEST(PartFeatures, ClockwiseInputGivesSameFeatures) {
   // The mixed shape listed clockwise: vertices reversed, bulges moved and negated.
   const Part p = moving_part(R"([[0,0],[0,4,-1],[2,4],[2,2],[4,2,0.5],[4,0]])");

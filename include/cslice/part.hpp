@@ -44,6 +44,11 @@ struct Feature {
   // runs counterclockwise from normal_in to normal_out for a convex vertex.
   Vec2 normal_in, normal_out;
   Vec2 point;  // vertex position (vertices only)
+  // The normal cone as angles, which the contact step buckets by; found with the part (see
+  // set_normal_angles) because their arc tangents cost a share of every one-shot slice.
+  // normal_angle: the direction of normal_in (a segment's, of its edge turned right); turn:
+  // the signed angle from normal_in to normal_out (vertices; zero otherwise).
+  double normal_angle = 0.0, turn = 0.0;
 };
 
 struct Part {
@@ -60,6 +65,9 @@ struct Part {
   // Features as the paper counts them: segments, arcs and endpoints.
   int feature_count() const { return segment_count() + arc_count() + vertex_count(); }
 };
+
+// Sets f.normal_angle and f.turn from its normals (and, for a segment, its edge in `loop`).
+void set_normal_angles(const Loop& loop, Feature& f);
 
 // Fills loop orientation, depth, features, box and area from raw loops (in any orientation).
 // Assumes the loops were validated: closed, simple, not crossing each other.

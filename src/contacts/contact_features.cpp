@@ -3,15 +3,11 @@
 namespace cslice {
 namespace {
 
-double angle_of(Vec2 v) {
-  return std::atan2(v.y, v.x);
-}
-
 void from_edge(const Part& part, const Feature& f, ContactFeature& c) {
   c.kind = f.kind;
   c.edge = edge_of(part, f);
   if (f.kind == FeatureKind::segment) {
-    c.normals = {angle_of(perp_right(c.edge.to - c.edge.from)), 0.0};
+    c.normals = {f.normal_angle, 0.0};
     return;
   }
   c.center = c.edge.center;
@@ -31,8 +27,7 @@ void from_vertex(const Feature& f, bool all_normals, ContactFeature& c) {
   c.center = f.point;
   c.can_touch = f.convexity == Convexity::convex;
   if (!c.can_touch && !all_normals) return;
-  const double turn = std::atan2(cross(f.normal_in, f.normal_out), dot(f.normal_in, f.normal_out));
-  c.normals = {angle_of(f.normal_in), std::max(0.0, turn)};
+  c.normals = {f.normal_angle, std::max(0.0, f.turn)};
 }
 
 }  // namespace

@@ -139,8 +139,12 @@ class ContactBuilder {
   // A moving disc feature on a fixed segment: the segment shifted by rho_m n_f - R c_m.
   void add_disc_on_segment(const ContactFeature& m, const ContactFeature& f) {
     if (!interval_contains(opposed(m.normals), f.normals.lo, pair_.tol.angular)) return;
-    const Vec2 normal = fixed_normals_ ? (*fixed_normals_)[f.feature] : unit_vector(f.normals.lo);
-    const Vec2 shift = m.rho * normal - moving(m).center;
+    // A vertex (radius 0) touches at its centre: no normal needed.
+    Vec2 shift = Vec2{} - moving(m).center;
+    if (m.rho != 0.0) {
+      const Vec2 normal = fixed_normals_ ? (*fixed_normals_)[f.feature] : unit_vector(f.normals.lo);
+      shift = m.rho * normal - moving(m).center;
+    }
     emit(m, f, contact_kind(m, f), make_segment(f.edge.from + shift, f.edge.to + shift));
   }
 
@@ -242,7 +246,8 @@ class ContactBuilder {
 // longest run, and a query reads each class's cells over that window: each run once.
 class NormalIndex {
  public:
-  NormalIndex(const std::vector<ContactFeature>& fixed, double angular_eps)
+  // `with_normals`: whether normals() is wanted (a sine and cosine per feature).
+  NormalIndex(const std::vector<ContactFeature>& fixed, double angular_eps, bool with_normals)
       : bucket_count_(std::clamp<size_t>(fixed.size(), 64, 65536)), eps_(angular_eps) {
     width_ = kTwoPi / double(bucket_count_);
     ranges_.resize(fixed.size());
@@ -251,9 +256,11 @@ class NormalIndex {
       if (fixed[i].can_touch) ranges_[i] = range_of(fixed[i].normals);
     // Only features that can touch are ever asked for theirs (and a vertex that cannot
     // touch has none: see ContactMaker).
-    normals_.resize(fixed.size());
-    for (size_t i = 0; i < fixed.size(); ++i)
-      if (fixed[i].can_touch) normals_[i] = unit_vector(fixed[i].normals.lo);
+    if (with_normals) {
+      normals_.resize(fixed.size());
+      for (size_t i = 0; i < fixed.size(); ++i)
+        if (fixed[i].can_touch) normals_[i] = unit_vector(fixed[i].normals.lo);
+    }
     if (few_features()) {
       masks_.assign(bucket_count_, 0);
       for (size_t i = 0; i < fixed.size(); ++i)
@@ -302,8 +309,9 @@ class NormalIndex {
   // Whether candidates reads the features from bits (and can filter them by a mask).
   bool few_features() const { return ranges_.size() <= kScanLimit; }
 
-  // unit_vector(f.normals.lo) of every fixed feature f that can touch, in feature order.
-  const std::vector<Vec2>& normals() const { return normals_; }
+  // unit_vector(f.normals.lo) of every fixed feature f that can touch, in feature order;
+  // null when not asked for.
+  const std::vector<Vec2>* normals() const { return normals_.empty() ? nullptr : &normals_; }
 
  private:
   static constexpr size_t kScanLimit = 64;
@@ -455,7 +463,11 @@ ContactMaker::ContactMaker(const Pair& pair)
       // it out), so its normals are not needed.
       moving_(contact_features(pair.moving, false)),
       fixed_(contact_features(pair.fixed, false)),
-      index_(std::make_unique<NormalIndex>(fixed_, pair.tol.angular)),
+      // Only a moving arc on a fixed segment needs the segment's normal as a vector.
+      index_(std::make_unique<NormalIndex>(
+          fixed_, pair.tol.angular,
+          std::any_of(moving_.begin(), moving_.end(),
+                      [](const ContactFeature& m) { return m.can_touch && m.rho != 0.0; }))),
       trig_(std::make_unique<TrigMemo>()) {
   // Which pairs can touch at all does not depend on theta: with few fixed features, as a
   // mask per moving feature that filters the candidates before they are looked at.
@@ -471,7 +483,7 @@ ContactMaker::~ContactMaker() = default;
 
 void ContactMaker::segments(double theta, std::vector<ContactSegment>& out) {
   out.clear();
-  ContactBuilder builder(pair_, Transform(Pose{0.0, 0.0, theta}), out, &index_->normals(),
+  ContactBuilder builder(pair_, Transform(Pose{0.0, 0.0, theta}), out, index_->normals(),
                          trig_.get());
   for (size_t k = 0; k < moving_.size(); ++k) {
     const ContactFeature& m = moving_[k];

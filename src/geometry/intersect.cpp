@@ -204,6 +204,20 @@ void cocircular_overlap(Intersection& r, const Curve& a, const Curve& b, double 
   }
 }
 
+// An end of a that is exactly (bit for bit) an end of b, with its parameters on both.
+struct SharedEnd {
+  bool shared = false;
+  Vec2 at;
+  double ta = 0.0, tb = 0.0;
+};
+SharedEnd shared_end(const Curve& a, const Curve& b) {
+  if (a.to == b.from) return {true, a.to, 1.0, 0.0};
+  if (a.from == b.to) return {true, a.from, 0.0, 1.0};
+  if (a.to == b.to) return {true, a.to, 1.0, 1.0};
+  if (a.from == b.from) return {true, a.from, 0.0, 0.0};
+  return {};
+}
+
 }  // namespace
 
 // Segment a(t) = a.from + t (a.to - a.from) against b(u) likewise. Parallel carriers within
@@ -221,6 +235,12 @@ Intersection intersect_segment_segment(const Curve& a, const Curve& b, double ep
   const double a_off_b = std::max(a0, a1) / lb;
   if (b_off_a <= eps || a_off_b <= eps) {
     collinear_overlap(r, a, b, eps);
+  } else if (const SharedEnd end = shared_end(a, b); end.shared) {
+    // Not collinear, so their carriers meet only there, and the other two ends lie farther
+    // than eps from the other's carrier: the general steps below would find this one point
+    // (up to round-off) and nothing else. Contact segments meeting end to end in a chain
+    // share their ends bit for bit, and most candidate pairs of a slice are such neighbours.
+    r.hits[r.count++] = point_hit(end.at, end.ta, end.tb, false);
   } else {
     const double denom = cross(da, db);
     if (denom != 0.0) {
