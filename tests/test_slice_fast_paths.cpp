@@ -1,6 +1,7 @@
 // The slice's shortcuts against the plain computations they replace: the index of fixed
 // normals (and the per-slice rotations it shares) against every feature pair tried in turn,
-// and the arrangement's merge of exactly equal points against clusters of near ones.
+// the arrangement's merge of exactly equal points against clusters of near ones, and the
+// split points left out where segments meet end to end.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "contacts/contact_features.hpp"
 #include "cslice/slice.hpp"
 #include "slice/arrangement.hpp"
+#include "slice/split_points.hpp"
 #include "support/random_parts.hpp"
 #include "support/random_polygons.hpp"
 
@@ -103,4 +105,35 @@ TEST(SliceFastPaths, EqualPointsStillJoinNearOnes) {
   EXPECT_EQ(arr.vertices.size(), curves.size() + 1);
   EXPECT_EQ(arr.edges.size(), curves.size());
   EXPECT_EQ(arr.outgoing(0).size(), curves.size());
+}
+
+// Segments meeting end to end share their ends bit for bit, and a touch there repeats the end
+// points every curve starts with: no split point is added for it. A crossing inside both
+// still adds its two, and the arrangement is the same closed chain with the crossing cut in.
+TEST(SliceFastPaths, EndToEndTouchesAddNoSplitPoints) {
+  const double eps = 1e-9;
+  const std::vector<Vec2> corners{{0.1, 0.3}, {4.7, 0.9}, {3.3, 3.1}, {0.9, 2.7}};
+  std::vector<Curve> chain;
+  for (size_t i = 0; i < corners.size(); ++i)
+    chain.push_back(make_segment(corners[i], corners[(i + 1) % corners.size()]));
+  SplitScratch scratch;
+  std::vector<SplitPoint> splits;
+  split_points(chain, eps, scratch, splits);
+  EXPECT_EQ(splits.size(), 2 * chain.size());  // the ends only
+
+  chain.push_back(make_segment({2.0, -1.0}, {2.5, 1.5}));  // crosses the first edge
+  split_points(chain, eps, scratch, splits);
+  ASSERT_EQ(splits.size(), 2 * chain.size() + 2);
+  EXPECT_EQ(splits[2 * chain.size()].met, 4);
+  EXPECT_EQ(splits[2 * chain.size() + 1].met, 0);
+
+  std::vector<int> ids(chain.size());
+  for (size_t i = 0; i < ids.size(); ++i) ids[i] = int(i);
+  Tolerances tol;
+  tol.geometric = eps;
+  ArrangementBuilder builder;
+  const Arrangement& arr = builder.build(chain, ids, tol);
+  EXPECT_EQ(arr.vertices.size(), 7u);  // 4 corners, the crossing, the stick's 2 ends
+  EXPECT_EQ(arr.edges.size(), 7u);
+  EXPECT_EQ(arr.faces.size(), 2u);
 }

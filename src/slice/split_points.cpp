@@ -51,6 +51,11 @@ void ClosestPoints::clear() {
 
 namespace {
 
+// Whether p at parameter t is exactly (bit for bit) an end of c.
+bool is_end(const Curve& c, double t, Vec2 p) {
+  return (t == 0.0 && p == c.from) || (t == 1.0 && p == c.to);
+}
+
 // Every pair of curves whose boxes overlap, found by sweeping boxes sorted by their left x.
 void candidate_pairs(SplitScratch& s) {
   const std::vector<Box>& boxes = s.boxes;
@@ -212,6 +217,12 @@ void split_points(const std::vector<Curve>& curves, double eps, SplitScratch& s,
                           : (h.ta0 > 0.0 && h.ta0 < 1.0 && h.tb0 > 0.0 && h.tb0 < 1.0)
                               ? Meeting::crossing
                               : Meeting::other;
+      // A touch exactly at an end of both curves (contact segments meeting end to end)
+      // repeats their end points, which come first, and records no meeting: adding it would
+      // only make two more points for every later step to merge back.
+      if (how == Meeting::other && !h.is_piece && is_end(curves[i], h.ta0, h.point) &&
+          is_end(curves[j], h.tb0, h.point))
+        continue;
       splits.push_back({i, h.ta0, h.point, j, how});
       splits.push_back({j, h.tb0, h.point, i, how});
       if (h.is_piece) {
