@@ -164,15 +164,18 @@ class Sharer {
   // eps from it. (Their t lies in [0, 1], the whole range a near piece spans.)
   void copy_near(int from, int to) {
     const Box& box = s_.boxes[to];
+    const Curve& other = curves_[to];
     for (FreshSplit& p : fresh_of(from)) {
-      if (p.met == to) continue;
+      // At an end of `to`, which is one of its points: has_point_near's answer, at once
+      // (the shared end of two contact segments meeting end to end).
+      if (p.met == to || p.p == other.from || p.p == other.to) continue;
       if (!p.located) {
         p.on_curve = point_at(curves_[p.curve], p.t);
         p.located = true;
       }
       const Vec2 q = p.on_curve;
       if (q.x < box.lo.x || q.x > box.hi.x || q.y < box.lo.y || q.y > box.hi.y) continue;
-      if (has_point_near(to, p.p) || distance_to_curve(curves_[to], q) > eps_) continue;
+      if (has_point_near(to, p.p) || distance_to_curve(other, q) > eps_) continue;
       add(to, p.p);
     }
   }
