@@ -37,8 +37,7 @@ bool same_bits(const Curve& a, const Curve& b) {
          (a.bulge == b.bulge || (std::isinf(a.bulge) && a.bulge == b.bulge));
 }
 
-void expect_same_contacts(const Pair& pair, const std::string& what) {
-  ContactMaker maker(pair);
+void expect_same_contacts(ContactMaker& maker, const Pair& pair, const std::string& what) {
   std::vector<ContactSegment> found;
   for (int k = 0; k < 16; ++k) {
     const double theta = -kPi + (k + 0.3) * kTwoPi / 16;
@@ -65,14 +64,35 @@ TEST(SliceFastPaths, ContactIndexFindsEveryTouchingPair) {
   for (int i = 0; i < 8; ++i) {
     const testkit::RandomPair rp = testkit::random_pair(rng, 4 + i, 5 + i, i % 2 == 0);
     ASSERT_LE(rp.pair.fixed.feature_count(), 64);
-    expect_same_contacts(rp.pair, "random pair " + std::to_string(i));
+    ContactMaker maker(rp.pair);
+    expect_same_contacts(maker, rp.pair, "random pair " + std::to_string(i));
   }
   for (const double jitter : {0.0, 0.3 * kTwoPi / 60}) {
     const testkit::StarPairLoops loops = testkit::lobed_star_pair(rng, 60, jitter, 0.3);
     const Pair pair =
         testkit::parse_or_throw(testkit::pair_json("star", {loops.moving}, {loops.fixed}), "star");
     ASSERT_GT(pair.fixed.feature_count(), 64);
-    expect_same_contacts(pair, "star");
+    ContactMaker maker(pair);
+    expect_same_contacts(maker, pair, "star");
+  }
+}
+
+// One maker reset from pair to pair (as compute_slice keeps one per thread) is a new maker
+// each time: from few fixed features to many and back, with and without arcs.
+TEST(SliceFastPaths, AResetContactMakerIsANewOne) {
+  std::mt19937 rng(78);
+  std::vector<Pair> pairs;
+  for (int i = 0; i < 3; ++i) {
+    pairs.push_back(testkit::random_pair(rng, 5 + i, 6 + i, i == 1).pair);
+    const testkit::StarPairLoops loops =
+        testkit::lobed_star_pair(rng, 40 + 10 * i, i * 0.01, i == 2 ? 0.0 : 0.4);
+    pairs.push_back(
+        testkit::parse_or_throw(testkit::pair_json("star", {loops.moving}, {loops.fixed}), "star"));
+  }
+  ContactMaker maker(pairs.back());
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    maker.reset(pairs[i]);
+    expect_same_contacts(maker, pairs[i], "pair " + std::to_string(i) + " after a reset");
   }
 }
 

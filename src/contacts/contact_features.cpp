@@ -33,9 +33,15 @@ void from_vertex(const Feature& f, bool all_normals, ContactFeature& c) {
 }  // namespace
 
 std::vector<ContactFeature> contact_features(const Part& part, bool all_normals) {
+  std::vector<ContactFeature> out;
+  contact_features(part, all_normals, out);
+  return out;
+}
+
+void contact_features(const Part& part, bool all_normals, std::vector<ContactFeature>& out) {
   // Sized first and filled in place: a feature is mostly its curve, and copying each one
   // in cost a fair share of a one-shot slice's set-up.
-  std::vector<ContactFeature> out(part.features.size());
+  out.assign(part.features.size(), ContactFeature{});
   for (size_t i = 0; i < part.features.size(); ++i) {
     const Feature& f = part.features[i];
     ContactFeature& c = out[i];
@@ -45,7 +51,6 @@ std::vector<ContactFeature> contact_features(const Part& part, bool all_normals)
       from_edge(part, f, c);
     c.feature = static_cast<int>(i);
   }
-  return out;
 }
 
 }  // namespace cslice

@@ -38,6 +38,8 @@ struct ContactFeature {
 // all_normals, a vertex that cannot touch (reflex or smooth) is left without its normals
 // (two angles each, and such a vertex touches nothing): for callers that never read them.
 std::vector<ContactFeature> contact_features(const Part& part, bool all_normals = true);
+// The same into `out`, whose storage is reused.
+void contact_features(const Part& part, bool all_normals, std::vector<ContactFeature>& out);
 
 // Whether a feature pair can touch at some orientation (local overlap filtering by
 // convexity; the normal sets decide at which orientations): reflex vertices, segment pairs,
@@ -55,6 +57,9 @@ class ContactMaker {
  public:
   explicit ContactMaker(const Pair& pair);
   ~ContactMaker();
+  // Makes this the maker of `pair`, as if newly constructed, reusing the storage (the
+  // trigonometry memo is kept: it only repeats what the functions give).
+  void reset(const Pair& pair);
   ContactMaker(const ContactMaker&) = delete;
   ContactMaker& operator=(const ContactMaker&) = delete;
   // Replaces out with the contact segments at theta, as contact_segments(pair, theta).
@@ -64,7 +69,7 @@ class ContactMaker {
   TrigMemo& trig() { return *trig_; }
 
  private:
-  const Pair& pair_;
+  const Pair* pair_ = nullptr;
   std::vector<ContactFeature> moving_, fixed_;
   std::unique_ptr<NormalIndex> index_;
   std::unique_ptr<TrigMemo> trig_;

@@ -457,20 +457,24 @@ class NormalIndex {
   double eps_;
 };
 
-ContactMaker::ContactMaker(const Pair& pair)
-    : pair_(pair),
-      // A feature that cannot touch is never paired (segments skips it, the index leaves
-      // it out), so its normals are not needed.
-      moving_(contact_features(pair.moving, false)),
-      fixed_(contact_features(pair.fixed, false)),
-      // Only a moving arc on a fixed segment needs the segment's normal as a vector.
-      index_(std::make_unique<NormalIndex>(
-          fixed_, pair.tol.angular,
-          std::any_of(moving_.begin(), moving_.end(),
-                      [](const ContactFeature& m) { return m.can_touch && m.rho != 0.0; }))),
-      trig_(std::make_unique<TrigMemo>()) {
+ContactMaker::ContactMaker(const Pair& pair) : trig_(std::make_unique<TrigMemo>()) {
+  reset(pair);
+}
+
+void ContactMaker::reset(const Pair& pair) {
+  pair_ = &pair;
+  // A feature that cannot touch is never paired (segments skips it, the index leaves it
+  // out), so its normals are not needed.
+  contact_features(pair.moving, false, moving_);
+  contact_features(pair.fixed, false, fixed_);
+  // Only a moving arc on a fixed segment needs the segment's normal as a vector.
+  index_ = std::make_unique<NormalIndex>(
+      fixed_, pair.tol.angular,
+      std::any_of(moving_.begin(), moving_.end(),
+                  [](const ContactFeature& m) { return m.can_touch && m.rho != 0.0; }));
   // Which pairs can touch at all does not depend on theta: with few fixed features, as a
   // mask per moving feature that filters the candidates before they are looked at.
+  touching_.clear();
   if (!index_->few_features()) return;
   touching_.assign(moving_.size(), 0);
   for (size_t i = 0; i < moving_.size(); ++i)
@@ -483,7 +487,7 @@ ContactMaker::~ContactMaker() = default;
 
 void ContactMaker::segments(double theta, std::vector<ContactSegment>& out) {
   out.clear();
-  ContactBuilder builder(pair_, Transform(Pose{0.0, 0.0, theta}), out, index_->normals(),
+  ContactBuilder builder(*pair_, Transform(Pose{0.0, 0.0, theta}), out, index_->normals(),
                          trig_.get());
   for (size_t k = 0; k < moving_.size(); ++k) {
     const ContactFeature& m = moving_[k];

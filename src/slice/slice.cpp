@@ -437,14 +437,27 @@ Slice Slicer::slice(double theta) {
 // a thread keeps at most what a slice of that size needs.
 Slice compute_slice(const Pair& pair, double theta) {
   constexpr size_t kKeptScratchSegments = 20000;
+  constexpr size_t kKeptMakerFeatures = 20000;
   thread_local SliceScratch scratch;
-  ContactMaker contacts(pair);
+  // The contact maker is made anew for this pair, in the storage of the last call's: its
+  // feature arrays alone are 120 bytes a feature, fresh pages at each call otherwise.
+  thread_local std::unique_ptr<ContactMaker> maker;
+  const size_t features = pair.moving.features.size() + pair.fixed.features.size();
+  if (maker)
+    maker->reset(pair);
+  else
+    maker = std::make_unique<ContactMaker>(pair);
+  ContactMaker& contacts = *maker;
   std::optional<PlacementTester> tester;
   std::optional<PairRegions> regions;
-  // The hints size the returned slice's vectors after the last slice of the same pair.
-  scratch.segments_hint = scratch.graph_edges_hint = 0;
+  // The hints size the returned slice's vectors after the last slice of the same pair; with
+  // none, about one contact segment per feature (a smooth pair has half as many, a rough one
+  // more), as growing the vector by doubling copied every segment twice over.
+  scratch.segments_hint = features;
+  scratch.graph_edges_hint = 0;
   Slice slice = SliceBuilder(pair, contacts, tester, regions, scratch, theta).build();
   if (slice.contact_segments.size() > kKeptScratchSegments) scratch = SliceScratch{};
+  if (features > kKeptMakerFeatures) maker.reset();
   return slice;
 }
 
