@@ -221,6 +221,9 @@ class SliceBuilder {
   bool sectors_explained_locally(int v) {
     const std::span<const int> out = arr_->outgoing(int(v));
     const int d = int(out.size());
+    // A dead end (a contact segment's end that meets nothing, as rough contours have by the
+    // hundred) has one sector, the whole turn: blocked from both sides or not explained.
+    if (d == 1) return blocks_left_of(out[0]) && blocks_right_of(out[0]);
     // Per half-edge (reused buffer: called for most vertices of big slices): its direction,
     // whether a label of it blocks its left (the sector counterclockwise of it) and its
     // right.
