@@ -15,7 +15,6 @@
 
 #include <chrono>
 #include <cstdlib>
-#include <map>
 #include <random>
 #include <stdexcept>
 
@@ -29,9 +28,7 @@ namespace {
 // half the edges arcs (testkit::curved_star_pair); built and parsed once per size, outside
 // the timed loop.
 const cslice::Pair& curved_pair(int n) {
-  static std::map<int, cslice::Pair> cache;
-  if (auto it = cache.find(n); it != cache.end()) return it->second;
-  return cache.emplace(n, cslice::testkit::curved_star_pair(n)).first->second;
+  return cslice::testkit::made_once(cslice::testkit::curved_star_pair, n);
 }
 
 void run_critical(benchmark::State& state, const cslice::Pair& pair, int threads = 0,
@@ -81,9 +78,7 @@ void BM_CriticalCurved(benchmark::State& state) {
 // A gear of n teeth in a ring gear of 2n (testkit::gear_pair): 24n features, symmetric under
 // turns by 2 pi / n and mirrors: the critical orientations of an eighth of a turn are searched.
 const cslice::Pair& gear_pair(int teeth) {
-  static std::map<int, cslice::Pair> cache;
-  if (auto it = cache.find(teeth); it != cache.end()) return it->second;
-  return cache.emplace(teeth, cslice::testkit::gear_pair(teeth)).first->second;
+  return cslice::testkit::made_once(cslice::testkit::gear_pair, teeth);
 }
 
 void BM_CriticalGear(benchmark::State& state) {

@@ -146,9 +146,7 @@ void BM_SlicerExample(benchmark::State& state, const std::string& name) {
 // arcs at the teeth's tips and roots), with the contact segments proven blocked left out as
 // the slice does, and with none left out: what the proof saves on arcs.
 const cslice::Pair& gear_pair(int teeth) {
-  static std::map<int, cslice::Pair> cache;
-  if (auto it = cache.find(teeth); it != cache.end()) return it->second;
-  return cache.emplace(teeth, cslice::testkit::gear_pair(teeth)).first->second;
+  return cslice::testkit::made_once(cslice::testkit::gear_pair, teeth);
 }
 void BM_SlicerGear(benchmark::State& state) {
   run_slicer_around(state, gear_pair(int(state.range(0))));

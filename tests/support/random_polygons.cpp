@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -262,6 +263,13 @@ Pair gear_pair(int teeth) {
   return parse_or_throw(gear_in_ring_json(teeth, 1.0 + 4.0 * k, 1.0 + 4.0 * k - 2.25, 2 * teeth,
                                           3.0 + 4.0 * k, 5.25 + 4.0 * k, 0.001),
                         "gear");
+}
+
+const Pair& made_once(Pair (*make)(int), int n) {
+  static std::map<std::pair<Pair (*)(int), int>, Pair> made;
+  const auto key = std::make_pair(make, n);
+  if (auto it = made.find(key); it != made.end()) return it->second;
+  return made.emplace(key, make(n)).first->second;
 }
 
 }  // namespace cslice::testkit

@@ -124,4 +124,8 @@ Pair curved_star_pair(int vertices);
 // symmetric under turns by 2 pi / teeth and mirrors; tolerance 0.001).
 Pair gear_pair(int teeth);
 
+// make(n), made at the first call for that maker and n and kept for the process: benchmarks
+// ask for the same pair in every run, outside their timed loops. Not thread-safe.
+const Pair& made_once(Pair (*make)(int), int n);
+
 }  // namespace cslice::testkit
