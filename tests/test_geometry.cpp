@@ -163,9 +163,16 @@ TEST(SegmentSegment, ASharedEndIsTheExactHit) {
   EXPECT_EQ(to_to.hits[0].ta0, 1.0);
   EXPECT_EQ(to_to.hits[0].tb0, 1.0);
   // Folded back within eps of itself: a shared piece, not a point.
-  const Intersection fold =
-      intersect(make_segment({0, 0}, {1, 0}), make_segment({1, 0}, {0.5, 1e-12}), kEps);
-  EXPECT_EQ(fold.kind, IntersectionKind::overlapping);
+  const Curve bar = make_segment({0, 0}, {1, 0}), back = make_segment({1, 0}, {0.5, 1e-12});
+  EXPECT_EQ(intersect(bar, back, kEps).kind, IntersectionKind::overlapping);
+  // The same answer without building the intersection, as the slice's split points ask it.
+  EXPECT_TRUE(segments_meet_end_to_end(a, b, kEps));
+  EXPECT_TRUE(segments_meet_end_to_end(b, c, kEps));
+  EXPECT_FALSE(segments_meet_end_to_end(bar, back, kEps));
+  EXPECT_FALSE(segments_meet_end_to_end(make_segment({0, 0}, {2, 2}), make_segment({0, 2}, {2, 0}),
+                                        kEps));  // a crossing, no shared end
+  EXPECT_FALSE(segments_meet_end_to_end(a, make_segment(p + Vec2{1e-15, 0}, {1.9, 4.1}), kEps));
+  EXPECT_FALSE(segments_meet_end_to_end(make_arc(p, 1.0, 0.0, 1.0), b, kEps));
 }
 
 TEST(SegmentSegment, EndpointWithinEpsilonOfTheOtherCounts) {

@@ -337,6 +337,9 @@ struct Intersection {
 };
 
 Intersection intersect_segment_segment(const Curve& a, const Curve& b, double eps);
+// Whether a and b are segments that share an end exactly (bit for bit) and are not collinear
+// within eps: then that end is their only meeting, intersect's one hit, at parameters 0 or 1.
+bool segments_meet_end_to_end(const Curve& a, const Curve& b, double eps);
 Intersection intersect_segment_arc(const Curve& segment, const Curve& arc, double eps);
 Intersection intersect_arc_arc(const Curve& a, const Curve& b, double eps);
 // The two crossing points of circles (c1, r1) and (c2, r2) at centre distance d > 0, computed

@@ -218,43 +218,68 @@ SharedEnd shared_end(const Curve& a, const Curve& b) {
   return {};
 }
 
+// How two segments lie to each other's carriers: their directions and lengths, and how far
+// each end is off the other's carrier times the other's length (near_carrier's very
+// products). Within eps of one carrier, both are collinear: one rule for
+// intersect_segment_segment and segments_meet_end_to_end.
+struct SegmentOffsets {
+  Vec2 da, db;
+  double la, lb;
+  double a0, a1, b0, b1;  // a.from, a.to off b's carrier; b.from, b.to off a's
+  bool collinear;
+};
+SegmentOffsets segment_offsets(const Curve& a, const Curve& b, double eps) {
+  SegmentOffsets o;
+  o.da = a.to - a.from;
+  o.db = b.to - b.from;
+  o.la = length(o.da);
+  o.lb = length(o.db);
+  o.b0 = std::fabs(cross(o.da, b.from - a.from));
+  o.b1 = std::fabs(cross(o.da, b.to - a.from));
+  o.a0 = std::fabs(cross(o.db, a.from - b.from));
+  o.a1 = std::fabs(cross(o.db, a.to - b.from));
+  const double b_off_a = std::max(o.b0, o.b1) / o.la;
+  const double a_off_b = std::max(o.a0, o.a1) / o.lb;
+  o.collinear = b_off_a <= eps || a_off_b <= eps;
+  return o;
+}
+
 }  // namespace
+
+// Not collinear, so their carriers meet only at the shared end, and the other two ends lie
+// farther than eps from the other's carrier: intersect_segment_segment finds that one point.
+bool segments_meet_end_to_end(const Curve& a, const Curve& b, double eps) {
+  return a.is_segment() && b.is_segment() && shared_end(a, b).shared &&
+         !segment_offsets(a, b, eps).collinear;
+}
 
 // Segment a(t) = a.from + t (a.to - a.from) against b(u) likewise. Parallel carriers within
 // eps overlap (a piece, or a tangent point when they only touch end to end); otherwise the
 // unique crossing of the carriers counts when it lies within eps of both segments.
 Intersection intersect_segment_segment(const Curve& a, const Curve& b, double eps) {
   Intersection r;
-  const Vec2 da = a.to - a.from, db = b.to - b.from;
-  const double la = length(da), lb = length(db);
-  // How far each end is off the other's carrier, times its length: near_carrier's very
-  // products, kept for the endpoint touches.
-  const double b0 = std::fabs(cross(da, b.from - a.from)), b1 = std::fabs(cross(da, b.to - a.from));
-  const double a0 = std::fabs(cross(db, a.from - b.from)), a1 = std::fabs(cross(db, a.to - b.from));
-  const double b_off_a = std::max(b0, b1) / la;
-  const double a_off_b = std::max(a0, a1) / lb;
-  if (b_off_a <= eps || a_off_b <= eps) {
+  const SegmentOffsets o = segment_offsets(a, b, eps);
+  if (o.collinear) {
     collinear_overlap(r, a, b, eps);
   } else if (const SharedEnd end = shared_end(a, b); end.shared) {
-    // Not collinear, so their carriers meet only there, and the other two ends lie farther
-    // than eps from the other's carrier: the general steps below would find this one point
-    // (up to round-off) and nothing else. Contact segments meeting end to end in a chain
-    // share their ends bit for bit, and most candidate pairs of a slice are such neighbours.
+    // The general steps below would find this one point (up to round-off) and nothing else
+    // (segments_meet_end_to_end). Contact segments meeting end to end in a chain share
+    // their ends bit for bit, and most candidate pairs of a slice are such neighbours.
     r.hits[r.count++] = point_hit(end.at, end.ta, end.tb, false);
   } else {
-    const double denom = cross(da, db);
+    const double denom = cross(o.da, o.db);
     if (denom != 0.0) {
       const Vec2 w = b.from - a.from;
-      const double t = cross(w, db) / denom, u = cross(w, da) / denom;
-      if (t >= -eps / la && t <= 1.0 + eps / la && u >= -eps / lb && u <= 1.0 + eps / lb) {
+      const double t = cross(w, o.db) / denom, u = cross(w, o.da) / denom;
+      if (t >= -eps / o.la && t <= 1.0 + eps / o.la && u >= -eps / o.lb && u <= 1.0 + eps / o.lb) {
         const double tc = std::clamp(t, 0.0, 1.0);
         add_hit(r, point_hit(lerp(a.from, a.to, tc), tc, std::clamp(u, 0.0, 1.0), false), eps);
       }
     }
     // near_carrier of each end, with carrier_slack from the lengths already at hand.
-    const double slack_a = eps * la, slack_b = eps * lb;
+    const double slack_a = eps * o.la, slack_b = eps * o.lb;
     add_endpoint_touches(r, a, b, false, eps,
-                         {a0 <= slack_b, a1 <= slack_b, b0 <= slack_a, b1 <= slack_a});
+                         {o.a0 <= slack_b, o.a1 <= slack_b, o.b0 <= slack_a, o.b1 <= slack_a});
   }
   finish_kind(r);
   return r;
