@@ -437,7 +437,8 @@ Slice Slicer::slice(double theta) {
 // of the last call's buffers back to the system when they are freed, and faulting them in
 // again took 0.5 ms of a 0.85 ms slice at 1,200 features (240 page faults a call). Buffers
 // grown by a slice of more than kKeptScratchSegments contact segments are released, so that
-// a thread keeps at most what a slice of that size needs.
+// a thread keeps at most what a slice of that size needs; so is the contact maker of a pair of
+// more than kKeptMakerFeatures features.
 Slice compute_slice(const Pair& pair, double theta) {
   constexpr size_t kKeptScratchSegments = 20000;
   constexpr size_t kKeptMakerFeatures = 20000;
