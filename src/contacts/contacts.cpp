@@ -343,7 +343,8 @@ class NormalIndex {
 
   template <class Fn>
   void for_each_bucket(const Range& r, Fn fn) const {
-    for (size_t k = 0; k < r.count; ++k) fn((r.first + k) % bucket_count_);
+    // first < n and count <= n: one wrap at most, without a division per bucket.
+    for (size_t k = 0, b = r.first; k < r.count; ++k, b = b + 1 == bucket_count_ ? 0 : b + 1) fn(b);
   }
 
   // The same buckets as for_each_bucket, as at most two runs [from, to) without the wrap.

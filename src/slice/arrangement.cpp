@@ -539,8 +539,8 @@ void link_half_edges(Arrangement& arr, Scratch& s) {
     for (int k = start[v]; k < start[v + 1]; ++k) position[outgoing[k]] = k - start[v];
   // The half-edge just clockwise of `twin` among those leaving w.
   auto clockwise_of = [&](int w, int twin) {
-    const int first = start[w], deg = start[w + 1] - first;
-    return outgoing[first + (position[twin] - 1 + deg) % deg];
+    const int p = position[twin];  // the one before it, cyclically (no division per edge)
+    return outgoing[p > 0 ? start[w] + p - 1 : start[w + 1] - 1];
   };
   // By edge: its forward half-edge ends at v, its backward one at u (no choice by parity).
   const ArrangementEdge* edges = arr.edges.data();

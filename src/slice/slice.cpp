@@ -237,7 +237,7 @@ class SliceBuilder {
     }
     bool all = true;
     for (int i = 0; i < d; ++i) {
-      const SectorSide& next = side[(i + 1) % d];
+      const SectorSide& next = side[i + 1 < d ? i + 1 : 0];
       const bool from_cw_side = side[i].blocks_left;
       const bool from_ccw_side = next.blocks_right;
       const bool narrow = d > 1 && cross(side[i].dir, next.dir) > 0.0;
@@ -252,7 +252,7 @@ class SliceBuilder {
         if (i == j || !side[j].blocks_right || dot(side[i].dir, side[j].dir) > 0.0 ||
             std::fabs(cross(side[i].dir, side[j].dir)) > pair_.tol.angular)
           continue;
-        for (int k = i; k != j; k = (k + 1) % d) side[k].explained = true;
+        for (int k = i; k != j; k = k + 1 < d ? k + 1 : 0) side[k].explained = true;
       }
     }
     return std::all_of(side.begin(), side.end(), [](const SectorSide& x) { return x.explained; });
