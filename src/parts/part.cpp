@@ -127,7 +127,7 @@ void set_normal_angles(const Loop& loop, Feature& f) {
     f.turn = std::atan2(cross(f.normal_in, f.normal_out), dot(f.normal_in, f.normal_out));
     return;
   }
-  const Curve& c = loop.edges[size_t(f.index) % loop.edges.size()];
+  const Curve& c = loop.edges[size_t(f.index)];
   const Vec2 normal = perp_right(c.to - c.from);  // unnormalised, as the contacts took it
   f.normal_angle = c.is_segment() ? std::atan2(normal.y, normal.x) : 0.0;
 }

@@ -113,8 +113,8 @@ Part placed(const Part& part, const Pose& pose) {
 }
 
 const Curve& edge_of(const Part& part, const Feature& f) {
-  const Loop& loop = part.loops[f.loop];
-  return loop.edges[f.index % loop.edges.size()];
+  // A feature's index is an edge's (a vertex's: the edge it starts), below the loop's count.
+  return part.loops[f.loop].edges[size_t(f.index)];
 }
 
 }  // namespace cslice
