@@ -249,7 +249,7 @@ class NormalIndex {
   // `with_normals`: whether normals() is wanted (a sine and cosine per feature).
   NormalIndex(const std::vector<ContactFeature>& fixed, double angular_eps, bool with_normals)
       : bucket_count_(std::clamp<size_t>(fixed.size(), 64, 65536)), eps_(angular_eps) {
-    width_ = kTwoPi / double(bucket_count_);
+    per_radian_ = double(bucket_count_) / kTwoPi;
     ranges_.resize(fixed.size());
     seen_.assign((fixed.size() + 63) / 64, 0);
     for (size_t i = 0; i < fixed.size(); ++i)
@@ -336,8 +336,10 @@ class NormalIndex {
     if (a.span + 2.0 * eps_ >= kTwoPi) return {0, n};
     double lo = fmod_two_pi(a.lo - eps_);
     if (lo < 0.0) lo += kTwoPi;
-    const size_t first = std::min(n - 1, size_t(lo / width_));
-    const size_t count = std::min(n, size_t((lo + a.span + 2.0 * eps_) / width_) - first + 1);
+    // Buckets by a product, not a quotient (two divisions per query): any increasing map
+    // keeps runs of meeting intervals meeting, the index's only need.
+    const size_t first = std::min(n - 1, size_t(lo * per_radian_));
+    const size_t count = std::min(n, size_t((lo + a.span + 2.0 * eps_) * per_radian_) - first + 1);
     return {first, count};
   }
 
@@ -454,7 +456,7 @@ class NormalIndex {
   std::vector<uint64_t> masks_;    // per bucket, its features as bits, when there are few
   mutable std::vector<uint64_t> seen_;   // candidates' bitmap of fixed features, left all zero
   mutable std::vector<size_t> touched_;  // the words of seen_ a query marked
-  double width_ = 1.0;
+  double per_radian_ = 1.0;              // buckets per radian
   double eps_;
 };
 
