@@ -69,24 +69,12 @@ const BenchPair& star_pair(Shape shape, int n) {
   static std::map<std::pair<int, int>, BenchPair> cache;
   const auto key = std::make_pair(static_cast<int>(shape), n);
   if (auto it = cache.find(key); it != cache.end()) return it->second;
-  for (unsigned seed = 2026;; ++seed) {
-    std::mt19937 rng(seed + static_cast<unsigned>(n));
-    const double radial_jitter = shape == Shape::rough ? 0.3 * cslice::kTwoPi / n : 0.0;
-    const double arc_fraction = shape == Shape::curved ? 0.5 : 0.0;
-    const cslice::testkit::StarPairLoops loops =
-        cslice::testkit::lobed_star_pair(rng, n, radial_jitter, arc_fraction);
-    BenchPair p;
-    p.fixed = loops.fixed;
-    p.moving = loops.moving;
-    cslice::LoadResult r =
-        cslice::parse_pair(cslice::testkit::pair_json("star", {p.moving}, {p.fixed}), "star");
-    if (!r.ok()) {
-      if (seed > 2100) throw std::runtime_error("star_pair: " + r.error->message());
-      continue;
-    }
-    p.pair = std::move(*r.pair);
-    return cache.emplace(key, std::move(p)).first->second;
-  }
+  const double radial_jitter = shape == Shape::rough ? 0.3 * cslice::kTwoPi / n : 0.0;
+  const double arc_fraction = shape == Shape::curved ? 0.5 : 0.0;
+  cslice::testkit::AcceptedStarPair a = cslice::testkit::accepted_star_pair(
+      n, radial_jitter, arc_fraction, 2026 + static_cast<unsigned>(n), 1, 76, "star");
+  BenchPair p{std::move(a.loops.moving), std::move(a.loops.fixed), std::move(a.pair)};
+  return cache.emplace(key, std::move(p)).first->second;
 }
 
 int features(const cslice::Pair& pair) {

@@ -128,15 +128,9 @@ bool check_pair(const Pair& pair, unsigned seed, const std::string& name) {
 // The --stars pair of a seed: the first of its draws (seed, seed + 1,000,003, ...) that the
 // reader accepts.
 testkit::RandomPair star_pair(unsigned seed) {
-  for (unsigned draw = seed, tries = 0; tries < 100; draw += 1000003u, ++tries) {
-    std::mt19937 rng(draw);
-    const testkit::StarPairLoops loops =
-        testkit::lobed_star_pair(rng, g_star_vertices, seed % 2 ? 0.3 : 0.1, 0.5);
-    const std::string json = testkit::pair_json("star", {loops.moving}, {loops.fixed});
-    LoadResult r = parse_pair(json, "star");
-    if (r.ok()) return {std::move(*r.pair), json};
-  }
-  throw std::runtime_error("--stars: no valid pair in 100 draws for seed " + std::to_string(seed));
+  testkit::AcceptedStarPair p = testkit::accepted_star_pair(g_star_vertices, seed % 2 ? 0.3 : 0.1,
+                                                            0.5, seed, 1000003u, 100, "star");
+  return {std::move(p.pair), std::move(p.json)};
 }
 
 // Checks the pairs make(seed) for seeds in [first, last), named "<kind> <seed>"; counts them.

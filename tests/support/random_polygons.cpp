@@ -248,14 +248,25 @@ Pair parse_or_throw(const std::string& json, const std::string& source) {
   return std::move(*r.pair);
 }
 
-Pair curved_star_pair(int vertices) {
-  for (unsigned seed = 2026; seed < 2100; ++seed) {
-    std::mt19937 rng(seed + static_cast<unsigned>(vertices));
-    const StarPairLoops loops = lobed_star_pair(rng, vertices, 0.1, 0.5);
-    LoadResult r = parse_pair(pair_json("curved", {loops.moving}, {loops.fixed}), "curved");
-    if (r.ok()) return std::move(*r.pair);
+AcceptedStarPair accepted_star_pair(int vertices, double radial_jitter, double arc_fraction,
+                                    unsigned first_seed, unsigned seed_step, int tries,
+                                    const std::string& name) {
+  std::string why;
+  for (int k = 0; k < tries; ++k) {
+    std::mt19937 rng(first_seed + unsigned(k) * seed_step);
+    StarPairLoops loops = lobed_star_pair(rng, vertices, radial_jitter, arc_fraction);
+    std::string json = pair_json(name, {loops.moving}, {loops.fixed});
+    LoadResult r = parse_pair(json, name);
+    if (r.ok()) return {std::move(loops), std::move(json), std::move(*r.pair)};
+    why = r.error->message();
   }
-  throw std::runtime_error("curved_star_pair: no seed gave a valid pair");
+  throw std::runtime_error(name + ": no valid star pair in " + std::to_string(tries) +
+                           " draws from seed " + std::to_string(first_seed) + " (last: " + why +
+                           ")");
+}
+
+Pair curved_star_pair(int vertices) {
+  return accepted_star_pair(vertices, 0.1, 0.5, 2026 + unsigned(vertices), 1, 74, "curved").pair;
 }
 
 Pair gear_pair(int teeth) {

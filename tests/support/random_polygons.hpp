@@ -64,6 +64,18 @@ struct StarPairLoops {
 StarPairLoops lobed_star_pair(std::mt19937& rng, int vertices, double radial_jitter,
                               double arc_fraction);
 
+// The first lobed star pair the reader accepts among those drawn by std::mt19937(first_seed +
+// k * seed_step) for k = 0 .. tries - 1 (the benchmarks', curved_star_pair's and the stress
+// driver's draws), with its loops and JSON (named `name`); throws when none is accepted.
+struct AcceptedStarPair {
+  StarPairLoops loops;
+  std::string json;
+  Pair pair;
+};
+AcceptedStarPair accepted_star_pair(int vertices, double radial_jitter, double arc_fraction,
+                                    unsigned first_seed, unsigned seed_step, int tries,
+                                    const std::string& name);
+
 struct CombOptions {
   int teeth = 3;
   // The width of the part meant to get caught: pocket mouths are drawn around it (some
