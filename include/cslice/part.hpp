@@ -66,8 +66,8 @@ struct Part {
   int feature_count() const { return segment_count() + arc_count() + vertex_count(); }
 };
 
-// Sets f.normal_angle and f.turn from its normals (and, for a segment, its edge in `loop`).
-void set_normal_angles(const Loop& loop, Feature& f);
+// Sets f.normal_angle and f.turn from its normals (and, for a segment, its edge: edge_of).
+void set_normal_angles(const Part& part, Feature& f);
 
 // Fills loop orientation, depth, features, box and area from raw loops (in any orientation).
 // Assumes the loops were validated: closed, simple, not crossing each other.

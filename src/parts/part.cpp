@@ -115,21 +115,21 @@ void build_features(Part& part, double angular) {
       part.features.push_back(edge_feature(loop, li, ei));
     }
   }
-  for (Feature& f : part.features) set_normal_angles(part.loops[f.loop], f);
+  for (Feature& f : part.features) set_normal_angles(part, f);
 }
 
 }  // namespace
 
-void set_normal_angles(const Loop& loop, Feature& f) {
-  f.turn = 0.0;
+void set_normal_angles(const Part& part, Feature& f) {
+  f.normal_angle = f.turn = 0.0;
   if (f.kind == FeatureKind::vertex) {
     f.normal_angle = std::atan2(f.normal_in.y, f.normal_in.x);
     f.turn = std::atan2(cross(f.normal_in, f.normal_out), dot(f.normal_in, f.normal_out));
-    return;
+  } else if (f.kind == FeatureKind::segment) {
+    const Curve& c = edge_of(part, f);
+    const Vec2 normal = perp_right(c.to - c.from);  // unnormalised, as the contacts took it
+    f.normal_angle = std::atan2(normal.y, normal.x);
   }
-  const Curve& c = loop.edges[size_t(f.index)];
-  const Vec2 normal = perp_right(c.to - c.from);  // unnormalised, as the contacts took it
-  f.normal_angle = c.is_segment() ? std::atan2(normal.y, normal.x) : 0.0;
 }
 
 int Part::segment_count() const {

@@ -107,7 +107,7 @@ Part placed(const Part& part, const Pose& pose) {
     f.normal_in = t.rotate(f.normal_in);
     f.normal_out = t.rotate(f.normal_out);
     f.point = t.apply(f.point);
-    set_normal_angles(out.loops[f.loop], f);
+    set_normal_angles(out, f);
   }
   return out;
 }
