@@ -157,3 +157,41 @@ TEST(SliceFastPaths, EndToEndTouchesAddNoSplitPoints) {
   EXPECT_EQ(arr.edges.size(), 7u);
   EXPECT_EQ(arr.faces.size(), 2u);
 }
+
+// A hairpin: a and b meet end to end at P and run back side by side, 1e-4 rad apart (not
+// collinear within eps). Alone, each has only its ends, and nothing is copied between them
+// (the sharing step skips such curves). A segment c crossing a at X, within eps of b there,
+// crosses b at X' 2.5e-3 away: X has no point of b near it, so it must still be copied onto
+// b, as X' onto a. (Along a, and along c too: a sharing step that skipped a would not fail
+// here, one that skipped every pair meeting at points would.)
+TEST(SliceFastPaths, EndToEndNeighboursStillShareTheirOtherPoints) {
+  const double eps = 1e-6;
+  const Vec2 p{0.0, 0.0};
+  const Curve a = make_segment({-1.0, 0.0}, p), b = make_segment(p, {-1.0, 1e-4});
+  SplitScratch scratch;
+  std::vector<SplitPoint> splits;
+  split_points({a, b}, eps, scratch, splits);
+  EXPECT_EQ(splits.size(), 4u);  // the ends only
+
+  const double slope = 1e-4;  // c: y = slope (x + 5e-3), through X = (-5e-3, 0)
+  const Curve c = make_segment({-0.1, slope * (-0.1 + 5e-3)}, {-0.001, slope * (-0.001 + 5e-3)});
+  split_points({a, b, c}, eps, scratch, splits);
+  const SplitPoint* x = nullptr;
+  const SplitPoint* x_on_b = nullptr;
+  for (const SplitPoint& s : splits) {
+    if (s.met != 2 || s.how != Meeting::crossing) continue;  // (c's end touches both too)
+    if (s.curve == 0) x = &s;
+    if (s.curve == 1) x_on_b = &s;
+  }
+  ASSERT_NE(x, nullptr);
+  ASSERT_NE(x_on_b, nullptr);
+  EXPECT_NEAR(x->p.x, -5e-3, 1e-9);
+  EXPECT_NEAR(x_on_b->p.x, -2.5e-3, 1e-9);
+  bool x_copied_onto_b = false, x_on_b_copied_onto_a = false;
+  for (const SplitPoint& s : splits) {
+    x_copied_onto_b |= s.curve == 1 && s.p == x->p;
+    x_on_b_copied_onto_a |= s.curve == 0 && s.p == x_on_b->p;
+  }
+  EXPECT_TRUE(x_copied_onto_b);
+  EXPECT_TRUE(x_on_b_copied_onto_a);
+}

@@ -127,8 +127,8 @@ class Sharer {
       s_.added.clear();
       for (const SharedPiece& sp : s_.shared) {
         if (sp.near) {
-          copy_near(sp.a, sp.b);
-          copy_near(sp.b, sp.a);
+          if (!(pass == 0 && sp.end_to_end && only_ends(sp.a))) copy_near(sp.a, sp.b);
+          if (!(pass == 0 && sp.end_to_end && only_ends(sp.b))) copy_near(sp.b, sp.a);
         } else {
           copy_inside(sp.a, sp.b, sp.a_lo, sp.a_hi);
           copy_inside(sp.b, sp.a, sp.b_lo, sp.b_hi);
@@ -142,6 +142,14 @@ class Sharer {
   }
 
  private:
+  // Whether curve c's fresh points are its two ends only (on the first pass every split
+  // point is fresh, and every curve has its ends). Then copy_near from c onto a segment it
+  // meets end to end copies nothing: their shared end is one of the other's ends, and
+  // since the two are not collinear within eps, c's other end lies farther than eps from
+  // the other's carrier. Most pairs of a slice are such neighbours, most of them without
+  // any other point.
+  bool only_ends(int c) const { return s_.fresh.start[c + 1] - s_.fresh.start[c] == 2; }
+
   std::span<FreshSplit> fresh_of(int c) {
     return {s_.points.data() + s_.fresh.start[c], s_.points.data() + s_.fresh.start[c + 1]};
   }
@@ -212,7 +220,7 @@ void split_points(const std::vector<Curve>& curves, double eps, SplitScratch& s,
     // Contact segments meeting end to end (most pairs): the touch at their shared end adds
     // no point (below) but they are near there, without building an Intersection.
     if (segments_meet_end_to_end(curves[i], curves[j], eps)) {
-      s.shared.push_back({i, j, 0.0, 1.0, 0.0, 1.0, true});
+      s.shared.push_back({i, j, 0.0, 1.0, 0.0, 1.0, true, true});
       continue;
     }
     const Intersection x = intersect(curves[i], curves[j], eps);

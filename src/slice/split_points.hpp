@@ -36,10 +36,12 @@ struct SplitsByCurve {
 // Two curves that meet, and where they may run within eps of each other: a piece shared by
 // both (collinear or co-circular within eps), as parameter ranges, or, for curves meeting at
 // points, their whole ranges (near = true: only points within eps of the other count).
+// end_to_end: segments_meet_end_to_end said they share an end and are not collinear.
 struct SharedPiece {
   int a, b;
   double a_lo, a_hi, b_lo, b_hi;
   bool near = false;
+  bool end_to_end = false;
 };
 
 // A fresh split point in curve order, with where it is on its own curve once located.
