@@ -45,9 +45,10 @@ struct Feature {
   Vec2 normal_in, normal_out;
   Vec2 point;  // vertex position (vertices only)
   // The normal cone as angles, which the contact step buckets by; found with the part (see
-  // set_normal_angles) because their arc tangents cost a share of every one-shot slice.
+  // set_normal_angle) because their arc tangents cost a share of every one-shot slice.
   // normal_angle: the direction of normal_in (a segment's, of its edge turned right); turn:
-  // the signed angle from normal_in to normal_out (vertices; zero otherwise).
+  // the signed angle from normal_in to normal_out (vertices, where it also decides the
+  // convexity; zero otherwise).
   double normal_angle = 0.0, turn = 0.0;
 };
 
@@ -66,8 +67,9 @@ struct Part {
   int feature_count() const { return segment_count() + arc_count() + vertex_count(); }
 };
 
-// Sets f.normal_angle and f.turn from its normals (and, for a segment, its edge: edge_of).
-void set_normal_angles(const Part& part, Feature& f);
+// Sets f.normal_angle from its normal_in (for a segment, from its edge: edge_of). The turn is
+// set where the vertex is made, and does not change when the part is placed.
+void set_normal_angle(const Part& part, Feature& f);
 
 // Fills loop orientation, depth, features, box and area from raw loops (in any orientation).
 // Assumes the loops were validated: closed, simple, not crossing each other.

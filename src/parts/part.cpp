@@ -98,6 +98,7 @@ Feature vertex_feature(const Loop& loop, int li, int ei, double angular) {
   f.point = out.from;
   f.normal_in = perp_right(t_in);
   f.normal_out = perp_right(t_out);
+  f.turn = turn;  // the normals turn as the tangents do
   if (std::fabs(turn) <= angular)
     f.convexity = Convexity::smooth;
   else
@@ -115,16 +116,15 @@ void build_features(Part& part, double angular) {
       part.features.push_back(edge_feature(loop, li, ei));
     }
   }
-  for (Feature& f : part.features) set_normal_angles(part, f);
+  for (Feature& f : part.features) set_normal_angle(part, f);
 }
 
 }  // namespace
 
-void set_normal_angles(const Part& part, Feature& f) {
-  f.normal_angle = f.turn = 0.0;
+void set_normal_angle(const Part& part, Feature& f) {
+  f.normal_angle = 0.0;
   if (f.kind == FeatureKind::vertex) {
     f.normal_angle = std::atan2(f.normal_in.y, f.normal_in.x);
-    f.turn = std::atan2(cross(f.normal_in, f.normal_out), dot(f.normal_in, f.normal_out));
   } else if (f.kind == FeatureKind::segment) {
     const Curve& c = edge_of(part, f);
     const Vec2 normal = perp_right(c.to - c.from);  // unnormalised, as the contacts took it

@@ -107,7 +107,7 @@ Part placed(const Part& part, const Pose& pose) {
     f.normal_in = t.rotate(f.normal_in);
     f.normal_out = t.rotate(f.normal_out);
     f.point = t.apply(f.point);
-    set_normal_angles(out, f);
+    set_normal_angle(out, f);  // (turn does not change with the pose)
   }
   return out;
 }
