@@ -111,9 +111,10 @@ std::vector<ContactSegment> contact_segments(const Pair& pair, double theta);
 
 // The whole slice at theta (any finite angle: one outside [-pi, pi) is wrapped there, by the
 // true turn when it is far, as std::sin and std::cos take it). Thread-safe; the calling thread
-// keeps the working buffers for its next call (released after a slice of more than 20,000 contact
-// segments, or of a pair of more than 20,000 features), but nothing of the pair: each call reads
-// it anew. For many slices of one pair, a Slicer also keeps the pair's contact data.
+// keeps the working buffers for its next call while they hold at most about 64 MB (released
+// after a larger slice: a smooth pair of 40,000 features, or a rough one of 8,000), but
+// nothing of the pair: each call reads it anew. For many slices of one pair, a Slicer also keeps
+// the pair's contact data.
 Slice compute_slice(const Pair& pair, double theta);
 
 // Ids of the realizable contact segments, sorted, each once: the contact graph's nodes, plus

@@ -432,16 +432,29 @@ Slice Slicer::slice(double theta) {
   return SliceBuilder(s.pair, s.contacts, s.tester, s.regions, s.scratch, theta).build();
 }
 
-// One-shot slices reuse this thread's working buffers. Fresh buffers for every call cost more
-// than the slice itself on pairs of a few thousand features: the allocator hands the pages
-// of the last call's buffers back to the system when they are freed, and faulting them in
-// again took 0.5 ms of a 0.85 ms slice at 1,200 features (240 page faults a call). Buffers
-// grown by a slice of more than kKeptScratchSegments contact segments are released, so that
-// a thread keeps at most what a slice of that size needs; so is the contact maker of a pair of
-// more than kKeptMakerFeatures features.
+// One-shot slices reuse this thread's working buffers and contact maker. Fresh ones for every
+// call cost more than the slice itself on pairs of a few thousand features: the allocator
+// hands the pages of the last call's buffers back to the system when they are freed, and
+// faulting them in again took 0.5 ms of a 0.85 ms slice at 1,200 features (240 page faults a
+// call), and 12 ms of a 46 ms slice of 58,000 contact segments. A thread keeps them while
+// they hold at most kKeptBytes by kept_bytes' bound, and releases them after a larger slice.
+namespace {
+
+constexpr size_t kKeptBytes = size_t(64) << 20;
+
+// At least what the maker and a slice's buffers hold, from their sizes: 160 bytes per
+// feature (the maker's feature arrays and index), 450 per contact segment (the curves, the
+// proof's slabs and grid) and 2,000 per edge of the arrangement (split points, pieces,
+// half-edges, their sorting keys and labels). Measured on smooth, rough and curved stars of
+// 200 to 250,000 contact segments and on gears, they held 55 to 100% of it
+// (docs/performance.md, twenty-first session).
+size_t kept_bytes(size_t features, size_t contact_segments, size_t edges) {
+  return 160 * features + 450 * contact_segments + 2000 * edges;
+}
+
+}  // namespace
+
 Slice compute_slice(const Pair& pair, double theta) {
-  constexpr size_t kKeptScratchSegments = 20000;
-  constexpr size_t kKeptMakerFeatures = 20000;
   thread_local SliceScratch scratch;
   // The contact maker is made anew for this pair, in the storage of the last call's: its
   // feature arrays alone are 120 bytes a feature, fresh pages at each call otherwise.
@@ -460,8 +473,11 @@ Slice compute_slice(const Pair& pair, double theta) {
   scratch.segments_hint = features;
   scratch.graph_edges_hint = 0;
   Slice slice = SliceBuilder(pair, contacts, tester, regions, scratch, theta).build();
-  if (slice.contact_segments.size() > kKeptScratchSegments) scratch = SliceScratch{};
-  if (features > kKeptMakerFeatures) maker.reset();
+  // realizable: one flag per edge of this slice's arrangement
+  if (kept_bytes(features, slice.contact_segments.size(), scratch.realizable.size()) > kKeptBytes) {
+    scratch = SliceScratch{};
+    maker.reset();
+  }
   return slice;
 }
 
