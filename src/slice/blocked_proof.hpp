@@ -91,6 +91,7 @@ class BlockedProof {
   std::vector<Box> cell_boxes_;
   std::vector<CellRange> slab_cells_;  // per slab: the cells its box overlaps
   std::vector<size_t> target_cells_;   // per target, in order: its cell
+  std::vector<int> near_;              // any_slab_near: the slabs in one cell whose boxes overlap
   std::vector<int> stamp_;  // per slab: the last query (a target, or a piece of an arc) to test it
   int query_ = -1;
   std::vector<int> target_start_, targets_;  // targets, by the cell of their box's centre
