@@ -153,9 +153,10 @@ void BlockedProof::find(const std::vector<ContactSegment>& segments, const PairR
   stamp_.assign(slabs_.size(), -1);
   query_ = -1;
   hint_ = -1;
-  for (int id : targets_) {
-    const Curve& c = segments[size_t(id)].curve;
-    if (c.is_segment() ? covered(c, id) : covered_arc(ArcTarget(c), 0)) proven[size_t(id)] = 1;
+  for (const Target& t : targets_) {
+    const bool held = t.line ? covered(t.from, t.to, t.id)
+                             : covered_arc(ArcTarget(segments[size_t(t.id)].curve), 0);
+    if (held) proven[size_t(t.id)] = 1;
   }
 }
 
@@ -268,7 +269,9 @@ void BlockedProof::order_targets(const std::vector<ContactSegment>& segments) {
   targets_.resize(size_t(target_start_.back()));
   size_t k = 0;
   for (const ContactSegment& s : segments)
-    if (!s.is_point) targets_[size_t(target_start_[target_cells_[k++]]++)] = s.id;
+    if (!s.is_point)
+      targets_[size_t(target_start_[target_cells_[k++]]++)] = {s.curve.from, s.curve.to, s.id,
+                                                               s.curve.is_segment()};
 }
 
 namespace {
@@ -354,8 +357,7 @@ bool BlockedProof::covered_arc(const ArcTarget& arc, int halvings) {
 // Whether the target is covered end to end by the slabs of other contact segments. One slab
 // often covers it whole; else the spans of the slabs near it are merged as they are found,
 // until they cover it (so a target left unproven is the only one that reads them all).
-bool BlockedProof::covered(const Curve& target, int id) {
-  const Vec2 p0 = target.from, p1 = target.to;
+bool BlockedProof::covered(Vec2 p0, Vec2 p1, int id) {
   Span span;
   bool whole = false;
   if (hint_ >= 0 && slabs_[size_t(hint_)].segment != id &&

@@ -78,7 +78,7 @@ class BlockedProof {
                  double margin);
   void index_slabs(const std::vector<ContactSegment>& segments);
   void order_targets(const std::vector<ContactSegment>& segments);
-  bool covered(const Curve& target, int id);
+  bool covered(Vec2 from, Vec2 to, int id);  // a line target
   bool covered_arc(const ArcTarget& arc, int halvings);
   template <class Stop>
   bool any_slab_near(const Box& b, Stop stop);
@@ -94,7 +94,15 @@ class BlockedProof {
   std::vector<int> near_;              // any_slab_near: the slabs in one cell whose boxes overlap
   std::vector<int> stamp_;  // per slab: the last query (a target, or a piece of an arc) to test it
   int query_ = -1;
-  std::vector<int> target_start_, targets_;  // targets, by the cell of their box's centre
+  // The targets, by the cell of their box's centre, with a line's ends: read in this order,
+  // from the contact segments they were a cache miss each.
+  struct Target {
+    Vec2 from, to;
+    int id;
+    bool line;
+  };
+  std::vector<int> target_start_;
+  std::vector<Target> targets_;
   std::vector<Span> spans_;  // on the target in hand: the spans found so far, merged
   Vec2 origin_;
   double cell_ = 1.0, per_cell_ = 1.0;
