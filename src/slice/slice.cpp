@@ -24,9 +24,11 @@ namespace {
 
 // Sorted, each id once. Mostly the two contact segments meeting at a vertex: those directly.
 void sort_unique(std::vector<int>& ids) {
-  if (ids.size() == 2) {
-    if (ids[1] < ids[0]) std::swap(ids[0], ids[1]);
-    if (ids[0] == ids[1]) ids.pop_back();
+  if (ids.size() == 2) {  // in either order as often: min and max, not a branch
+    const int lo = std::min(ids[0], ids[1]), hi = std::max(ids[0], ids[1]);
+    ids[0] = lo;
+    ids[1] = hi;
+    if (lo == hi) ids.pop_back();
     return;
   }
   small_sort(ids.begin(), ids.end());
