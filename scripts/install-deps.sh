@@ -22,7 +22,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev librapidcheck-dev
   libcgal-dev libgmp-dev libmpfr-dev
-  libtbb-dev libpugixml-dev
+  libtbb-dev libpugixml-dev libboost-dev
   clang-format
 )
 # The viewer (cslice view) is bundled with npm at build time (viewer/package-lock.json).

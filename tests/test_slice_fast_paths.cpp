@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <malloc.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -13,6 +14,7 @@
 #include "contacts/contact_features.hpp"
 #include "cslice/slice.hpp"
 #include "slice/arrangement.hpp"
+#include "slice/small_sort.hpp"
 #include "slice/split_points.hpp"
 #include "support/random_parts.hpp"
 #include "support/random_polygons.hpp"
@@ -218,4 +220,27 @@ TEST(SliceFastPaths, OneShotSlicesKeepAtMost64MBOfBuffers) {
   EXPECT_LE(after_kept, 64.0) << "kept_bytes in slice.cpp no longer bounds what is kept";
   ASSERT_GT(compute_slice(released, 0.7).contact_segments.size(), 200000u);
   EXPECT_LT(heap_in_use() - start, 8.0) << "a slice over the budget kept its buffers";
+}
+
+// The slice's sorts pick std::sort for keys in long runs and the branch-free pdqsort for
+// short ones: both kinds of key order are told apart, and sorted either way.
+TEST(SliceFastPaths, SortByRunsTellsRunLengthsAndSortsBoth) {
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> step(0.1, 1.0);
+  // Runs of 8 rising and falling in turn (a smooth contour's keys), and shuffled keys.
+  std::vector<double> runs;
+  double x = 0.0;
+  for (int run = 0; run < 40; ++run)
+    for (int k = 0; k < 8; ++k) runs.push_back(x += (run % 2 == 0 ? 1.0 : -0.9) * step(rng));
+  std::vector<double> shuffled = runs;
+  std::shuffle(shuffled.begin(), shuffled.end(), rng);
+  const std::less<double> less;
+  EXPECT_FALSE(has_short_runs(runs.begin(), runs.end(), less));
+  EXPECT_TRUE(has_short_runs(shuffled.begin(), shuffled.end(), less));
+  for (std::vector<double>* keys : {&runs, &shuffled}) {
+    std::vector<double> expected = *keys;
+    std::sort(expected.begin(), expected.end());
+    sort_by_runs(keys->begin(), keys->end(), less);
+    EXPECT_EQ(*keys, expected);
+  }
 }

@@ -174,10 +174,10 @@ void sort_points_by_x(const std::vector<SplitPoint>& splits, Scratch& s) {
   if (n < 4096) {  // the radix passes only pay off on many points
     s.by_x.resize(n);
     for (size_t i = 0; i < n; ++i) s.by_x[i] = {splits[distinct[i]].p.x, distinct[i]};
-    std::sort(s.by_x.begin(), s.by_x.end(),
-              [](const std::pair<double, int>& a, const std::pair<double, int>& b) {
-                return a.first < b.first;
-              });
+    sort_by_runs(s.by_x.begin(), s.by_x.end(),
+                 [](const std::pair<double, int>& a, const std::pair<double, int>& b) {
+                   return a.first < b.first;
+                 });
     for (size_t i = 0; i < n; ++i) {
       order[i] = s.by_x[i].second;
       points[i] = splits[order[i]].p;

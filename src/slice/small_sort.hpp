@@ -5,9 +5,15 @@
 #pragma once
 
 #include <algorithm>
+#include <boost/sort/pdqsort/pdqsort.hpp>
+#include <cstddef>
 #include <functional>
 
 namespace cslice {
+
+// Monotone runs shorter than this on average (a turn every this many keys or more often)
+// are short (sort_by_runs).
+constexpr std::ptrdiff_t kShortRunsTurnsPer = 4;
 
 template <class It, class Less = std::less<>>
 void small_sort(It first, It last, Less less = {}) {
@@ -19,6 +25,35 @@ void small_sort(It first, It last, Less less = {}) {
     for (; j > first && less(x, *(j - 1)); --j) *j = std::move(*(j - 1));
     *j = std::move(x);
   }
+}
+
+// Whether the keys come in monotone runs shorter than kShortRunsTurnsPer on average: one
+// pass counts the turns, where an ascending run meets a descending one.
+template <class It, class Less>
+bool has_short_runs(It first, It last, Less less) {
+  const std::ptrdiff_t n = last - first;
+  if (n < 3) return false;
+  std::ptrdiff_t turns = 0;
+  bool rising = less(first[0], first[1]);
+  for (It i = first + 2; i < last; ++i) {
+    const bool up = less(*(i - 1), *i);
+    turns += up != rising ? 1 : 0;
+    rising = up;
+  }
+  return kShortRunsTurnsPer * turns > n;
+}
+
+// Sorts by `less` (not stably): std::sort where the keys come in long monotone runs (its
+// branches then mostly go the same way, and are predicted), Boost's branch-free pdqsort
+// where runs are short (comparisons that go either way, on which std::sort's branches
+// were mispredicted half the time). A slice's key orders are of both kinds: smooth contours
+// give runs of 6 or more on average, rough and curved ones of 2 or 3 (random keys: 1.5).
+template <class It, class Less>
+void sort_by_runs(It first, It last, Less less) {
+  if (has_short_runs(first, last, less))
+    boost::sort::pdqsort_branchless(first, last, less);
+  else
+    std::sort(first, last, less);
 }
 
 }  // namespace cslice
