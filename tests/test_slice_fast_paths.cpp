@@ -81,7 +81,8 @@ TEST(SliceFastPaths, ContactIndexFindsEveryTouchingPair) {
 }
 
 // One maker reset from pair to pair (as compute_slice keeps one per thread) is a new maker
-// each time: from few fixed features to many and back, with and without arcs.
+// each time: from few fixed features to many and back, with and without arcs, and from a
+// rough pair (whose vertices' normals make the index's long runs) to smooth ones.
 TEST(SliceFastPaths, AResetContactMakerIsANewOne) {
   std::mt19937 rng(78);
   std::vector<Pair> pairs;
@@ -91,6 +92,10 @@ TEST(SliceFastPaths, AResetContactMakerIsANewOne) {
         testkit::lobed_star_pair(rng, 40 + 10 * i, i * 0.01, i == 2 ? 0.0 : 0.4);
     pairs.push_back(
         testkit::parse_or_throw(testkit::pair_json("star", {loops.moving}, {loops.fixed}), "star"));
+    if (i < 2)
+      pairs.push_back(testkit::accepted_star_pair(60, 0.3 * kTwoPi / 60, i * 0.4, 90 + unsigned(i),
+                                                  1, 76, "rough")
+                          .pair);
   }
   ContactMaker maker(pairs.back());
   for (size_t i = 0; i < pairs.size(); ++i) {

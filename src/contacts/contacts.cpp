@@ -247,20 +247,34 @@ class ContactBuilder {
 class NormalIndex {
  public:
   // `with_normals`: whether normals() is wanted (a sine and cosine per feature).
-  NormalIndex(const std::vector<ContactFeature>& fixed, double angular_eps, bool with_normals)
-      : bucket_count_(std::clamp<size_t>(fixed.size(), 64, 65536)), eps_(angular_eps) {
+  NormalIndex(const std::vector<ContactFeature>& fixed, double angular_eps, bool with_normals) {
+    build(fixed, angular_eps, with_normals);
+  }
+
+  // Made anew for these features, in the storage of the last ones (ContactMaker::reset).
+  void build(const std::vector<ContactFeature>& fixed, double angular_eps, bool with_normals) {
+    bucket_count_ = std::clamp<size_t>(fixed.size(), 64, 65536);
+    eps_ = angular_eps;
     per_radian_ = double(bucket_count_) / kTwoPi;
-    ranges_.resize(fixed.size());
+    ranges_.assign(fixed.size(), Range{});
     seen_.assign((fixed.size() + 63) / 64, 0);
     for (size_t i = 0; i < fixed.size(); ++i)
       if (fixed[i].can_touch) ranges_[i] = range_of(fixed[i].normals);
     // Only features that can touch are ever asked for theirs (and a vertex that cannot
     // touch has none: see ContactMaker).
+    normals_.clear();
     if (with_normals) {
       normals_.resize(fixed.size());
       for (size_t i = 0; i < fixed.size(); ++i)
         if (fixed[i].can_touch) normals_[i] = unit_vector(fixed[i].normals.lo);
     }
+    masks_.clear();
+    bucket_start_.clear();
+    bucket_items_.clear();
+    runs_.clear();
+    classes_.clear();
+    cells_.clear();
+    whole_circle_.clear();
     if (few_features()) {
       masks_.assign(bucket_count_, 0);
       for (size_t i = 0; i < fixed.size(); ++i)
@@ -369,10 +383,10 @@ class NormalIndex {
       if (is_short(r)) for_each_bucket(r, [&](size_t b) { ++bucket_start_[b + 1]; });
     for (size_t b = 0; b < bucket_count_; ++b) bucket_start_[b + 1] += bucket_start_[b];
     bucket_items_.resize(size_t(bucket_start_.back()));
-    std::vector<int> fill(bucket_start_.begin(), bucket_start_.end() - 1);
+    fill_.assign(bucket_start_.begin(), bucket_start_.end() - 1);
     for (size_t i = 0; i < ranges_.size(); ++i)
       if (is_short(ranges_[i]))
-        for_each_bucket(ranges_[i], [&](size_t b) { bucket_items_[size_t(fill[b]++)] = int(i); });
+        for_each_bucket(ranges_[i], [&](size_t b) { bucket_items_[size_t(fill_[b]++)] = int(i); });
   }
 
   // The long runs, grouped by class and within a class c by cells of 2^c buckets where they
@@ -444,9 +458,10 @@ class NormalIndex {
     word |= uint64_t{1} << (size_t(feature) % 64);
   }
 
-  size_t bucket_count_;
+  size_t bucket_count_ = 64;
   // The short runs in bucket b: bucket_items_[bucket_start_[b] .. bucket_start_[b + 1]).
   std::vector<int> bucket_start_, bucket_items_;
+  std::vector<int> fill_;          // list_short_runs' buffer
   std::vector<Range> ranges_;      // per fixed feature; empty when it cannot touch
   std::vector<Run> runs_;          // long: by class, then by cell of start
   std::vector<Class> classes_;     // the classes that have runs
@@ -457,7 +472,7 @@ class NormalIndex {
   mutable std::vector<uint64_t> seen_;   // candidates' bitmap of fixed features, left all zero
   mutable std::vector<size_t> touched_;  // the words of seen_ a query marked
   double per_radian_ = 1.0;              // buckets per radian
-  double eps_;
+  double eps_ = 0.0;
 };
 
 ContactMaker::ContactMaker(const Pair& pair) : trig_(std::make_unique<TrigMemo>()) {
@@ -471,10 +486,13 @@ void ContactMaker::reset(const Pair& pair) {
   contact_features(pair.moving, false, moving_);
   contact_features(pair.fixed, false, fixed_);
   // Only a moving arc on a fixed segment needs the segment's normal as a vector.
-  index_ = std::make_unique<NormalIndex>(
-      fixed_, pair.tol.angular,
+  const bool with_normals =
       std::any_of(moving_.begin(), moving_.end(),
-                  [](const ContactFeature& m) { return m.can_touch && m.rho != 0.0; }));
+                  [](const ContactFeature& m) { return m.can_touch && m.rho != 0.0; });
+  if (index_)
+    index_->build(fixed_, pair.tol.angular, with_normals);
+  else
+    index_ = std::make_unique<NormalIndex>(fixed_, pair.tol.angular, with_normals);
   // Which pairs can touch at all does not depend on theta: with few fixed features, as a
   // mask per moving feature that filters the candidates before they are looked at.
   touching_.clear();
