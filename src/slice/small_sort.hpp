@@ -32,8 +32,9 @@ void small_sort(It first, It last, Less less = {}) {
 
 // Whether the keys come in monotone runs shorter than kShortRunsTurnsPer on average: one
 // pass counts the turns, where an ascending run meets a descending one, over the first
-// kRunSample keys (a slice's keys follow its curves' order, the same kind of contour
-// throughout; on smooth stars the whole pass was 1% of a slice).
+// kRunSample keys. A slice's keys follow its curves' order, mostly one kind of contour
+// throughout, and a wrong guess costs only time: both sorts sort. (The whole pass was 1% of
+// a smooth star's slice.)
 template <class It, class Less>
 bool has_short_runs(It first, It last, Less less) {
   const std::ptrdiff_t n = std::min<std::ptrdiff_t>(last - first, kRunSample);
