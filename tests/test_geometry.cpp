@@ -173,6 +173,12 @@ TEST(SegmentSegment, ASharedEndIsTheExactHit) {
                                         kEps));  // a crossing, no shared end
   EXPECT_FALSE(segments_meet_end_to_end(a, make_segment(p + Vec2{1e-15, 0}, {1.9, 4.1}), kEps));
   EXPECT_FALSE(segments_meet_end_to_end(make_arc(p, 1.0, 0.0, 1.0), b, kEps));
+  // A bar continued with its far end 0.5 to 3 eps off the bar's line: collinear within
+  // eps at first (a shared piece), then meeting end to end, decided by the offsets and then
+  // on squares (beyond twice eps).
+  for (const double off : {0.5, 0.9, 1.1, 1.5, 3.0})
+    EXPECT_EQ(segments_meet_end_to_end(bar, make_segment({1, 0}, {2, off * kEps}), kEps), off > 1.0)
+        << off << " eps off";
 }
 
 TEST(SegmentSegment, EndpointWithinEpsilonOfTheOtherCounts) {

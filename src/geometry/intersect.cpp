@@ -244,13 +244,28 @@ SegmentOffsets segment_offsets(const Curve& a, const Curve& b, double eps) {
   return o;
 }
 
+// Whether segment_offsets would find them not collinear, decided on squares, without a root
+// or a division, when both are clearly so: some end of each lies more than 2 eps off the
+// other's carrier. The margin of 2 covers the rounding of either form many times over; in
+// between, segment_offsets decides.
+bool clearly_not_collinear(const Curve& a, const Curve& b, double eps) {
+  const Vec2 da = a.to - a.from, db = b.to - b.from;
+  const double b0 = cross(da, b.from - a.from), b1 = cross(da, b.to - a.from);
+  const double a0 = cross(db, a.from - b.from), a1 = cross(db, a.to - b.from);
+  const double margin = 4.0 * eps * eps;
+  return std::max(b0 * b0, b1 * b1) > margin * dot(da, da) &&
+         std::max(a0 * a0, a1 * a1) > margin * dot(db, db);
+}
+
 }  // namespace
 
 // Not collinear, so their carriers meet only at the shared end, and the other two ends lie
 // farther than eps from the other's carrier: intersect_segment_segment finds that one point.
+// Contact segments meeting end to end at an angle (most candidate pairs of a slice) are
+// told apart on squares (clearly_not_collinear).
 bool segments_meet_end_to_end(const Curve& a, const Curve& b, double eps) {
   return a.is_segment() && b.is_segment() && shared_end(a, b).shared &&
-         !segment_offsets(a, b, eps).collinear;
+         (clearly_not_collinear(a, b, eps) || !segment_offsets(a, b, eps).collinear);
 }
 
 // Segment a(t) = a.from + t (a.to - a.from) against b(u) likewise. Parallel carriers within
