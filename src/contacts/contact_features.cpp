@@ -7,22 +7,24 @@ namespace {
 void from_edge(const Part& part, const Feature& f, ContactFeature& c) {
   c.kind = f.kind;
   c.can_touch = true;
-  c.edge = edge_of(part, f);
+  const Curve& edge = edge_of(part, f);
+  c.from = edge.from;
+  c.to = edge.to;
   if (f.kind == FeatureKind::segment) {
     c.center = {};
     c.rho = 0.0;
     c.normals = {f.normal_angle, 0.0};
     return;
   }
-  c.center = c.edge.center;
-  if (c.edge.sweep > 0.0) {
+  c.center = edge.center;
+  if (edge.sweep > 0.0) {
     // Material on the left of a counterclockwise arc is inside its circle: convex.
-    c.rho = c.edge.radius;
-    c.normals = {c.edge.start_angle, c.edge.sweep};
+    c.rho = edge.radius;
+    c.normals = {edge.start_angle, edge.sweep};
   } else {
     // Clockwise: material outside the circle, normals point at the centre.
-    c.rho = -c.edge.radius;
-    c.normals = {c.edge.start_angle + c.edge.sweep + kPi, -c.edge.sweep};
+    c.rho = -edge.radius;
+    c.normals = {edge.start_angle + edge.sweep + kPi, -edge.sweep};
   }
 }
 
@@ -30,7 +32,7 @@ void from_vertex(const Feature& f, bool all_normals, ContactFeature& c) {
   c.kind = FeatureKind::vertex;
   c.center = f.point;
   c.rho = 0.0;
-  c.edge = Curve{};
+  c.from = c.to = Vec2{};
   c.can_touch = f.convexity == Convexity::convex;
   c.normals = !c.can_touch && !all_normals ? AngleInterval{}
                                            : AngleInterval{f.normal_angle, std::max(0.0, f.turn)};

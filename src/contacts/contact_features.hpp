@@ -30,7 +30,7 @@ struct ContactFeature {
   bool can_touch = true;  // false for reflex and smooth vertices
   Vec2 center;            // arcs: circle centre; vertices: the vertex
   double rho = 0.0;       // +r convex arc, -r concave arc, 0 vertex
-  Curve edge;             // segments and arcs: the edge itself
+  Vec2 from, to;          // segments and arcs: the edge's ends (all the contacts read of it)
   AngleInterval normals;  // outward normals the feature can touch along
 };
 

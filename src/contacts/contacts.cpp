@@ -145,7 +145,7 @@ class ContactBuilder {
       const Vec2 normal = fixed_normals_ ? (*fixed_normals_)[f.feature] : unit_vector(f.normals.lo);
       shift = m.rho * normal - moving(m).center;
     }
-    emit(m, f, contact_kind(m, f), make_segment(f.edge.from + shift, f.edge.to + shift));
+    emit(m, f, contact_kind(m, f), make_segment(f.from + shift, f.to + shift));
   }
 
   // A moving segment on a fixed disc feature: the reversed rotated segment, placed so its
@@ -210,7 +210,7 @@ class ContactBuilder {
   Moving& moving(const ContactFeature& m) {
     if (moving_of_ != &m) {
       moving_of_ = &m;
-      moving_ = {rot_.rotate(m.center), rot_.rotate(m.edge.from), rot_.rotate(m.edge.to), {}};
+      moving_ = {rot_.rotate(m.center), rot_.rotate(m.from), rot_.rotate(m.to), {}};
     }
     return moving_;
   }

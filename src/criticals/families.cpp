@@ -29,7 +29,7 @@ ContactFamily disc_on_segment(const ContactFeature& m, const ContactFeature& f) 
   fam.shape = FamilyShape::fixed_line;
   const double n_f = f.normals.lo;
   const Vec2 shift = m.rho * unit_vector(n_f);
-  fam.ends = {{f.edge.from + shift, -m.center}, {f.edge.to + shift, -m.center}};
+  fam.ends = {{f.from + shift, -m.center}, {f.to + shift, -m.center}};
   fam.alive = {n_f - kPi - m.normals.lo - m.normals.span, m.normals.span};
   return fam;
 }
@@ -38,7 +38,7 @@ ContactFamily segment_on_disc(const ContactFeature& m, const ContactFeature& f) 
   ContactFamily fam;
   fam.shape = FamilyShape::turning_line;
   const Vec2 u = f.rho * unit_vector(m.normals.lo + kPi);
-  fam.ends = {{f.center, u - m.edge.from}, {f.center, u - m.edge.to}};
+  fam.ends = {{f.center, u - m.from}, {f.center, u - m.to}};
   fam.alive = {f.normals.lo - m.normals.lo - kPi, f.normals.span};
   return fam;
 }
