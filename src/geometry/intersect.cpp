@@ -228,33 +228,43 @@ struct SegmentOffsets {
   double a0, a1, b0, b1;  // a.from, a.to off b's carrier; b.from, b.to off a's
   bool collinear;
 };
-SegmentOffsets segment_offsets(const Curve& a, const Curve& b, double eps) {
+
+// The directions and the ends' offsets, without the lengths and the verdict
+// (measure_collinear).
+SegmentOffsets end_offsets(const Curve& a, const Curve& b) {
   SegmentOffsets o;
   o.da = a.to - a.from;
   o.db = b.to - b.from;
-  o.la = length(o.da);
-  o.lb = length(o.db);
   o.b0 = std::fabs(cross(o.da, b.from - a.from));
   o.b1 = std::fabs(cross(o.da, b.to - a.from));
   o.a0 = std::fabs(cross(o.db, a.from - b.from));
   o.a1 = std::fabs(cross(o.db, a.to - b.from));
-  const double b_off_a = std::max(o.b0, o.b1) / o.la;
-  const double a_off_b = std::max(o.a0, o.a1) / o.lb;
-  o.collinear = b_off_a <= eps || a_off_b <= eps;
   return o;
 }
 
-// Whether segment_offsets would find them not collinear, decided on squares, without a root
-// or a division, when both are clearly so: some end of each lies more than 2 eps off the
-// other's carrier. The margin of 2 covers the rounding of either form many times over; in
-// between, segment_offsets decides.
-bool clearly_not_collinear(const Curve& a, const Curve& b, double eps) {
-  const Vec2 da = a.to - a.from, db = b.to - b.from;
-  const double b0 = cross(da, b.from - a.from), b1 = cross(da, b.to - a.from);
-  const double a0 = cross(db, a.from - b.from), a1 = cross(db, a.to - b.from);
+// The lengths, and whether the ends lie within eps of the other's carrier.
+void measure_collinear(SegmentOffsets& o, double eps) {
+  o.la = length(o.da);
+  o.lb = length(o.db);
+  const double b_off_a = std::max(o.b0, o.b1) / o.la;
+  const double a_off_b = std::max(o.a0, o.a1) / o.lb;
+  o.collinear = b_off_a <= eps || a_off_b <= eps;
+}
+
+SegmentOffsets segment_offsets(const Curve& a, const Curve& b, double eps) {
+  SegmentOffsets o = end_offsets(a, b);
+  measure_collinear(o, eps);
+  return o;
+}
+
+// Whether measure_collinear would find them not collinear, decided on squares, without a
+// root or a division, when both are clearly so: some end of each lies more than 2 eps off
+// the other's carrier. The margin of 2 covers the rounding of either form many times over;
+// in between, measure_collinear decides.
+bool clearly_not_collinear(const SegmentOffsets& o, double eps) {
   const double margin = 4.0 * eps * eps;
-  return std::max(b0 * b0, b1 * b1) > margin * dot(da, da) &&
-         std::max(a0 * a0, a1 * a1) > margin * dot(db, db);
+  return std::max(o.b0 * o.b0, o.b1 * o.b1) > margin * dot(o.da, o.da) &&
+         std::max(o.a0 * o.a0, o.a1 * o.a1) > margin * dot(o.db, o.db);
 }
 
 }  // namespace
@@ -264,8 +274,11 @@ bool clearly_not_collinear(const Curve& a, const Curve& b, double eps) {
 // Contact segments meeting end to end at an angle (most candidate pairs of a slice) are
 // told apart on squares (clearly_not_collinear).
 bool segments_meet_end_to_end(const Curve& a, const Curve& b, double eps) {
-  return a.is_segment() && b.is_segment() && shared_end(a, b).shared &&
-         (clearly_not_collinear(a, b, eps) || !segment_offsets(a, b, eps).collinear);
+  if (!a.is_segment() || !b.is_segment() || !shared_end(a, b).shared) return false;
+  SegmentOffsets o = end_offsets(a, b);
+  if (clearly_not_collinear(o, eps)) return true;
+  measure_collinear(o, eps);
+  return !o.collinear;
 }
 
 // Segment a(t) = a.from + t (a.to - a.from) against b(u) likewise. Parallel carriers within
