@@ -323,10 +323,8 @@ bool BlockedProof::any_slab_near(const Box& b, Stop stop) {
       int* near = near_.data();
       size_t count = 0;
       for (int k = begin; k < end; ++k) {
-        const Box& c = cell_boxes_[size_t(k)];
         near[count] = cell_slabs_[size_t(k)];
-        count += size_t((c.lo.x <= b.hi.x) & (b.lo.x <= c.hi.x) & (c.lo.y <= b.hi.y) &
-                        (b.lo.y <= c.hi.y));
+        count += size_t(cell_boxes_[size_t(k)].overlaps(b));
       }
       for (size_t i = 0; i < count; ++i) {
         const int j = near[i];
