@@ -188,6 +188,67 @@ TEST(SegmentSegment, EndpointWithinEpsilonOfTheOtherCounts) {
   EXPECT_NE(x.kind, IntersectionKind::none);
 }
 
+// The shortcut the slice's split points take before intersecting a pair of segments: a
+// segment lying wholly on one side of the other's carrier, more than 2 eps off it, is apart.
+TEST(SegmentSegment, PairsApartAreToldBeforeIntersecting) {
+  const Curve bar = make_segment({0, 0}, {1, 0});
+  // A stem above the bar, its foot 0.5 to 3 eps off the bar's line: touching within eps,
+  // then a case for the full routine (none), then apart (beyond twice eps).
+  for (const double off : {0.5, 0.9, 1.5, 1.9, 2.1, 3.0}) {
+    const Curve stem = make_segment({0.5, off * kEps}, {0.7, 1.0});
+    const SegmentPairShortcut expected =
+        off > 2.0 ? SegmentPairShortcut::apart : SegmentPairShortcut::needs_intersection;
+    EXPECT_EQ(segment_pair_shortcut(bar, stem, kEps), expected) << off << " eps off";
+    EXPECT_EQ(segment_pair_shortcut(stem, bar, kEps), expected) << off << " eps off";
+    EXPECT_EQ(intersect(bar, stem, kEps).kind == IntersectionKind::none, off > 1.0) << off;
+  }
+  // Straddling the bar's line but wholly to its right: apart by the bar's own carrier.
+  EXPECT_EQ(segment_pair_shortcut(bar, make_segment({2, -1}, {2, 1}), kEps),
+            SegmentPairShortcut::apart);
+  // Parallel and far: apart. Crossing, or collinear within eps: not told, nor arcs.
+  EXPECT_EQ(segment_pair_shortcut(bar, make_segment({0, 1}, {1, 1}), kEps),
+            SegmentPairShortcut::apart);
+  EXPECT_EQ(segment_pair_shortcut(bar, make_segment({0.5, -1}, {0.5, 1}), kEps),
+            SegmentPairShortcut::needs_intersection);
+  EXPECT_EQ(segment_pair_shortcut(bar, make_segment({2, 0.5 * kEps}, {3, 0.5 * kEps}), kEps),
+            SegmentPairShortcut::needs_intersection);
+  EXPECT_EQ(segment_pair_shortcut(bar, make_arc({0.5, 2}, 1.0, 0.0, 1.0), kEps),
+            SegmentPairShortcut::needs_intersection);
+}
+
+// On random pairs placed eps-close in every way (ends near the other's carrier, shared ends,
+// near-parallel), the shortcut never contradicts the full routine.
+TEST(SegmentSegment, TheShortcutAgreesWithIntersectOnNearPairs) {
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> u(-1, 1), t(-0.3, 1.3), off(-4, 4);
+  int apart = 0, end_to_end = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Curve a = make_segment({u(rng), u(rng)}, {u(rng), u(rng)});
+    const Vec2 normal = perp_left(normalized(a.to - a.from));
+    auto near_a = [&] { return point_at(a, t(rng)) + (off(rng) * kEps) * normal; };
+    const Vec2 from = i % 3 == 0 ? a.to : near_a();
+    const Vec2 to = i % 2 == 0 ? near_a() : Vec2{u(rng), u(rng)};
+    const Curve b = make_segment(from, to);
+    const Intersection x = intersect(a, b, kEps);
+    switch (segment_pair_shortcut(a, b, kEps)) {
+      case SegmentPairShortcut::apart:
+        ++apart;
+        EXPECT_EQ(x.kind, IntersectionKind::none) << i;
+        break;
+      case SegmentPairShortcut::end_to_end:
+        ++end_to_end;
+        ASSERT_EQ(x.count, 1) << i;
+        EXPECT_FALSE(x.hits[0].is_piece) << i;
+        EXPECT_EQ(x.hits[0].point, a.to) << i;
+        break;
+      case SegmentPairShortcut::needs_intersection:
+        break;
+    }
+  }
+  EXPECT_GT(apart, 2000);
+  EXPECT_GT(end_to_end, 2000);
+}
+
 TEST(SegmentArc, TwoCrossings) {
   const Intersection x = intersect(make_segment({-2, 0.5}, {2, 0.5}), make_circle({0, 0}, 1), kEps);
   ASSERT_EQ(x.kind, IntersectionKind::two);

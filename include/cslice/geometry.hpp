@@ -339,8 +339,15 @@ struct Intersection {
 };
 
 Intersection intersect_segment_segment(const Curve& a, const Curve& b, double eps);
-// Whether a and b are segments that share an end exactly (bit for bit) and are not collinear
-// within eps: then that end is their only meeting, intersect's one hit, at parameters 0 or 1.
+// What intersect_segment_segment would find for segments a and b, when the offsets of their
+// ends from each other's carriers tell it without building the intersection:
+// - end_to_end: they share an end exactly (bit for bit) and are not collinear within eps;
+//   that end is their only meeting, intersect's one hit, at parameters 0 or 1;
+// - apart: one lies on one side of the other's carrier, more than 2 eps off it all along,
+//   and they are not collinear: no hit;
+// - needs_intersection: anything else, arcs included.
+enum class SegmentPairShortcut { end_to_end, apart, needs_intersection };
+SegmentPairShortcut segment_pair_shortcut(const Curve& a, const Curve& b, double eps);
 bool segments_meet_end_to_end(const Curve& a, const Curve& b, double eps);
 Intersection intersect_segment_arc(const Curve& segment, const Curve& arc, double eps);
 Intersection intersect_arc_arc(const Curve& a, const Curve& b, double eps);

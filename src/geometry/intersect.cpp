@@ -225,7 +225,8 @@ SharedEnd shared_end(const Curve& a, const Curve& b) {
 struct SegmentOffsets {
   Vec2 da, db;
   double la, lb;
-  double a0, a1, b0, b1;  // a.from, a.to off b's carrier; b.from, b.to off a's
+  double a0, a1, b0, b1;        // a.from, a.to off b's carrier; b.from, b.to off a's
+  bool a_one_side, b_one_side;  // both ends of a strictly on one side of b's carrier; of b, a's
   bool collinear;
 };
 
@@ -235,10 +236,14 @@ SegmentOffsets end_offsets(const Curve& a, const Curve& b) {
   SegmentOffsets o;
   o.da = a.to - a.from;
   o.db = b.to - b.from;
-  o.b0 = std::fabs(cross(o.da, b.from - a.from));
-  o.b1 = std::fabs(cross(o.da, b.to - a.from));
-  o.a0 = std::fabs(cross(o.db, a.from - b.from));
-  o.a1 = std::fabs(cross(o.db, a.to - b.from));
+  const double b0 = cross(o.da, b.from - a.from), b1 = cross(o.da, b.to - a.from);
+  const double a0 = cross(o.db, a.from - b.from), a1 = cross(o.db, a.to - b.from);
+  o.b0 = std::fabs(b0);
+  o.b1 = std::fabs(b1);
+  o.a0 = std::fabs(a0);
+  o.a1 = std::fabs(a1);
+  o.b_one_side = b0 * b1 > 0.0;
+  o.a_one_side = a0 * a1 > 0.0;
   return o;
 }
 
@@ -267,18 +272,39 @@ bool clearly_not_collinear(const SegmentOffsets& o, double eps) {
          std::max(o.a0 * o.a0, o.a1 * o.a1) > margin * dot(o.db, o.db);
 }
 
+// Whether both ends of a segment lie on one side of the other's carrier, more than 2 eps off
+// it (on squares, as clearly_not_collinear), given their offsets times the carrier's length.
+bool clear_of_carrier(bool one_side, double off0, double off1, Vec2 carrier, double eps) {
+  return one_side && std::min(off0 * off0, off1 * off1) > 4.0 * eps * eps * dot(carrier, carrier);
+}
+
 }  // namespace
 
-// Not collinear, so their carriers meet only at the shared end, and the other two ends lie
-// farther than eps from the other's carrier: intersect_segment_segment finds that one point.
-// Contact segments meeting end to end at an angle (most candidate pairs of a slice) are
-// told apart on squares (clearly_not_collinear).
-bool segments_meet_end_to_end(const Curve& a, const Curve& b, double eps) {
-  if (!a.is_segment() || !b.is_segment() || !shared_end(a, b).shared) return false;
+// End to end: not collinear, so their carriers meet only at the shared end, and the other
+// two ends lie farther than eps from the other's carrier; intersect_segment_segment finds
+// that one point. Contact segments meeting end to end at an angle (most candidate pairs of a
+// slice) are told on squares (clearly_not_collinear).
+// Apart: one lies wholly on one side of the other's carrier, more than 2 eps off it, so no
+// point of it (nor the carriers' crossing, beyond its end) is within eps of the other, and
+// they are not collinear: intersect_segment_segment finds no point. Most candidate pairs of
+// rough contours that do not meet end to end.
+SegmentPairShortcut segment_pair_shortcut(const Curve& a, const Curve& b, double eps) {
+  if (!a.is_segment() || !b.is_segment()) return SegmentPairShortcut::needs_intersection;
   SegmentOffsets o = end_offsets(a, b);
-  if (clearly_not_collinear(o, eps)) return true;
-  measure_collinear(o, eps);
-  return !o.collinear;
+  const bool not_collinear = clearly_not_collinear(o, eps);
+  if (shared_end(a, b).shared) {
+    if (not_collinear) return SegmentPairShortcut::end_to_end;
+    measure_collinear(o, eps);
+    return o.collinear ? SegmentPairShortcut::needs_intersection : SegmentPairShortcut::end_to_end;
+  }
+  const bool apart = clear_of_carrier(o.b_one_side, o.b0, o.b1, o.da, eps) ||
+                     clear_of_carrier(o.a_one_side, o.a0, o.a1, o.db, eps);
+  return not_collinear && apart ? SegmentPairShortcut::apart
+                                : SegmentPairShortcut::needs_intersection;
+}
+
+bool segments_meet_end_to_end(const Curve& a, const Curve& b, double eps) {
+  return segment_pair_shortcut(a, b, eps) == SegmentPairShortcut::end_to_end;
 }
 
 // Segment a(t) = a.from + t (a.to - a.from) against b(u) likewise. Parallel carriers within

@@ -229,11 +229,14 @@ void split_points(const std::vector<Curve>& curves, double eps, SplitScratch& s,
   candidate_pairs(s);
   for (auto [i, j] : s.pairs) {
     // Contact segments meeting end to end (most pairs): the touch at their shared end adds
-    // no point (below) but they are near there, without building an Intersection.
-    if (segments_meet_end_to_end(curves[i], curves[j], eps)) {
+    // no point (below) but they are near there, without building an Intersection. Segments
+    // apart add nothing.
+    const SegmentPairShortcut shortcut = segment_pair_shortcut(curves[i], curves[j], eps);
+    if (shortcut == SegmentPairShortcut::end_to_end) {
       s.shared.push_back({i, j, 0.0, 1.0, 0.0, 1.0, true, true});
       continue;
     }
+    if (shortcut == SegmentPairShortcut::apart) continue;
     const Intersection x = intersect(curves[i], curves[j], eps);
     bool piece = false;
     for (int k = 0; k < x.count; ++k) {
