@@ -17,6 +17,7 @@
 
 #include "parts/loop_queries.hpp"
 #include "slice/close_points.hpp"
+#include "slice/lone_trees.hpp"
 #include "slice/small_sort.hpp"
 #include "slice/split_points.hpp"
 #include "slice/trig_memo.hpp"
@@ -88,6 +89,8 @@ struct ArrangementBuilder::Scratch {
   std::vector<std::pair<int, int>> end_pairs;
   std::vector<int> kept;
   std::vector<Vec2> kept_mid;
+  LoneTreeScratch lone_trees;
+  std::vector<char> left_out;  // per curve, when leaving out lone trees: 1 for theirs
   Meetings meetings;
   struct Direction {
     int vertex;
@@ -387,7 +390,9 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
   std::vector<ArrangementEdge>& pieces = s.pieces;
   pieces.clear();
   pieces.reserve(splits.size());
+  const bool leaving_out = !s.left_out.empty();
   for (size_t c = 0; c < curves.size(); ++c) {
+    if (leaving_out && s.left_out[c]) continue;
     const Curve& curve = curves[c];
     if (curve.is_segment()) direction = normalized(curve.to - curve.from);
     int cached = -1;  // the split point `at` describes
@@ -672,7 +677,9 @@ void place_outer_cycles(Arrangement& arr, Scratch& s) {
   std::sort(s.bounded.begin(), s.bounded.end(),
             [&](int a, int b) { return arr.cycles[a].area < arr.cycles[b].area; });
   s.placed.assign(probes.size(), false);
+  size_t unplaced = probes.size();
   for (int k : s.bounded) {
+    if (unplaced == 0) break;  // the larger cycles left would place nothing: no boxes for them
     const ArrangementCycle& o = arr.cycles[k];
     const Box& o_box = cycle_box_of(arr, s, k);
     s.candidates.clear();
@@ -692,6 +699,7 @@ void place_outer_cycles(Arrangement& arr, Scratch& s) {
     for (size_t j = 0; j < s.candidates.size(); ++j) {
       if (!s.inside[j]) continue;
       s.placed[s.candidates[j]] = true;
+      --unplaced;
       arr.cycles[probes[s.candidates[j]].cycle].face = o.face;
     }
   }
@@ -764,7 +772,8 @@ ArrangementBuilder& ArrangementBuilder::operator=(ArrangementBuilder&&) noexcept
 
 const Arrangement& ArrangementBuilder::build(const std::vector<Curve>& curves,
                                              const std::vector<int>& segment_ids,
-                                             const Tolerances& tol, TrigMemo* trig) {
+                                             const Tolerances& tol, TrigMemo* trig,
+                                             bool leave_out_lone_trees) {
   Arrangement& arr = arr_;
   Scratch& s = *scratch_;
   arr.vertices.clear();
@@ -772,6 +781,10 @@ const Arrangement& ArrangementBuilder::build(const std::vector<Curve>& curves,
   arr.cycles.clear();
   arr.cycle_half_edges.clear();
   split_points(curves, tol.geometric, s.split, s.splits);
+  if (leave_out_lone_trees)
+    find_lone_trees(curves, s.split.shared, s.lone_trees, s.left_out);
+  else
+    s.left_out.clear();
   merge_points(s, tol.geometric, arr.vertices);
   build_edges(arr, s, curves, segment_ids, tol.geometric, trig);
   collect_meetings(s, curves.size());

@@ -88,7 +88,7 @@ class SliceBuilder {
       curves.push_back(s.curve);
       ids.push_back(s.id);
     }
-    arr_ = &scratch_.arrangements.build(curves, ids, pair_.tol, &contacts_.trig());
+    arr_ = &scratch_.arrangements.build(curves, ids, pair_.tol, &contacts_.trig(), true);
     summarize_labels();
     label_faces();
     find_realizable_edges();
