@@ -204,10 +204,11 @@ TEST(SliceFastPaths, EndToEndNeighboursStillShareTheirOtherPoints) {
   EXPECT_TRUE(x_on_b_copied_onto_a);
 }
 
-// A slice's arrangement leaves out chains of segments that meet nothing but each other, end
-// to end, without a loop (slice/lone_trees.hpp): their curves make vertices and no edges. A
-// closed chain, three segments meeting at one point, and two crossing segments stay.
-TEST(SliceFastPaths, LoneTreesAreLeftOutOfTheSlicesArrangement) {
+// A slice's arrangement peels off edges dangling into blocked faces (slice/edge_pieces.hpp):
+// a chain of one-sided segments meeting nothing else, and two segments crossing, go whole;
+// a loop stays, as do the arms of three segments meeting at one point (a possible perfect
+// fit) and a sliding fit (two coincident segments, blocked on both sides).
+TEST(SliceFastPaths, DanglingEdgesArePeeledOffTheSlicesArrangement) {
   std::vector<Curve> curves;
   auto chain = [&](const std::vector<Vec2>& points, bool closed) {
     for (size_t i = 0; i + 1 < points.size(); ++i)
@@ -215,31 +216,36 @@ TEST(SliceFastPaths, LoneTreesAreLeftOutOfTheSlicesArrangement) {
     if (closed) curves.push_back(make_segment(points.back(), points.front()));
   };
   chain({{0, 0}, {0, 10}, {10, 10}, {10, 0}}, true);           // the box around: 4 edges
-  chain({{2, 2}, {3, 2.5}, {4, 2}, {5, 3}}, false);            // lone: left out
+  chain({{2, 2}, {3, 2.5}, {4, 2}, {5, 3}}, false);            // 3 edges, peeled
   chain({{2, 7}, {3, 7}, {2.5, 8}}, true);                     // a loop: 3 edges
   for (const Vec2 arm : {Vec2{8, 7}, Vec2{7, 8}, Vec2{6, 6}})  // a star: 3 edges
     curves.push_back(make_segment({7, 7}, arm));
-  curves.push_back(make_segment({6, 2}, {8, 4}));  // a cross: 4 edges
+  curves.push_back(make_segment({6, 2}, {8, 4}));  // a cross: 4 edges, peeled
   curves.push_back(make_segment({6, 4}, {8, 2}));
+  curves.push_back(make_segment({12, 0}, {13, 0}));  // a sliding fit: 1 edge
+  curves.push_back(make_segment({13, 0}, {12, 0}));
   std::vector<int> ids(curves.size());
   for (size_t i = 0; i < ids.size(); ++i) ids[i] = int(i);
   Tolerances tol;
   tol.geometric = 1e-9;
   ArrangementBuilder builder;
   const Arrangement& all = builder.build(curves, ids, tol);
-  EXPECT_EQ(all.edges.size(), 17u);
+  EXPECT_EQ(all.edges.size(), 18u);
   const size_t vertices = all.vertices.size(), faces = all.faces.size();
   EXPECT_EQ(faces, 3u);  // unbounded, the box's inside, the loop's inside
   const Arrangement& slice = builder.build(curves, ids, tol, nullptr, true);
-  EXPECT_EQ(slice.edges.size(), 14u);
+  EXPECT_EQ(slice.edges.size(), 11u);
   EXPECT_EQ(slice.vertices.size(), vertices);
   EXPECT_EQ(slice.faces.size(), faces);
   for (const ArrangementEdge& e : slice.edges)
-    for (const EdgeLabel& l : e.labels) EXPECT_TRUE(l.segment < 4 || l.segment > 6) << l.segment;
-  // The lone chain touching the loop within eps is no longer lone.
+    for (const EdgeLabel& l : e.labels)
+      EXPECT_TRUE(l.segment < 4 || (l.segment > 6 && l.segment < 13) || l.segment > 14)
+          << l.segment;
+  // A chain touching the loop: peeled too, having split the loop's edge.
   curves.push_back(make_segment({5, 3}, {2.5, 7.0 - 0.5e-9}));
   ids.push_back(int(ids.size()));
-  EXPECT_EQ(builder.build(curves, ids, tol, nullptr, true).edges.size(), 19u);
+  EXPECT_EQ(builder.build(curves, ids, tol, nullptr, true).edges.size(), 12u);
+  EXPECT_EQ(builder.build(curves, ids, tol).edges.size(), 20u);
 }
 
 // compute_slice keeps its buffers on the thread between calls, up to about 64 MB: those of a

@@ -17,7 +17,8 @@
 
 #include "parts/loop_queries.hpp"
 #include "slice/close_points.hpp"
-#include "slice/lone_trees.hpp"
+#include "slice/edge_pieces.hpp"
+#include "slice/group_by.hpp"
 #include "slice/small_sort.hpp"
 #include "slice/split_points.hpp"
 #include "slice/trig_memo.hpp"
@@ -86,11 +87,7 @@ struct ArrangementBuilder::Scratch {
   std::vector<int> start, along;
   std::vector<std::pair<double, int>> at_t;
   std::vector<ArrangementEdge> pieces;
-  std::vector<std::pair<int, int>> end_pairs;
-  std::vector<int> kept;
-  std::vector<Vec2> kept_mid;
-  LoneTreeScratch lone_trees;
-  std::vector<char> left_out;  // per curve, when leaving out lone trees: 1 for theirs
+  PieceScratch edge_pieces;
   Meetings meetings;
   struct Direction {
     int vertex;
@@ -273,82 +270,9 @@ Curve piece_of(const Curve& c, double t0, double t1, Vec2 from, Vec2 to, TrigMem
   return make_arc_between(c.center, c.radius, start, sweep, from, to);
 }
 
-// Groups 0 .. n - 1 by key(i) in [0, keys) (counting sort, stable): the members of group g
-// are order[start[g] .. start[g + 1]), in increasing i. `fill` is a buffer.
-template <class Key>
-void group_by(size_t n, size_t keys, Key key, std::vector<int>& start, std::vector<int>& order,
-              std::vector<int>& fill) {
-  start.assign(keys + 1, 0);
-  for (size_t i = 0; i < n; ++i) ++start[key(i) + 1];
-  for (size_t g = 0; g < keys; ++g) start[g + 1] += start[g];
-  order.resize(n);
-  fill.assign(start.begin(), start.end() - 1);
-  for (size_t i = 0; i < n; ++i) order[fill[key(i)]++] = int(i);
-}
-
-// Merges coincident edges (same ends, same midpoint) into the first of them, which then
-// carries every label. Candidates share their pair of end vertices: pieces are grouped by
-// their lower end, then sorted by the other one within each (small) group.
-void merge_coincident_edges(Arrangement& arr, Scratch& s, double eps) {
-  std::vector<ArrangementEdge>& pieces = s.pieces;
-  const size_t count = pieces.size();  // read once: the stores below could alias it
-  std::vector<std::pair<int, int>>& end_pairs = s.end_pairs;  // compact: read many times
-  end_pairs.resize(count);
-  for (size_t i = 0; i < count; ++i)
-    end_pairs[i] = {std::min(pieces[i].u, pieces[i].v), std::max(pieces[i].u, pieces[i].v)};
-  auto ends = [&](int i) { return end_pairs[i]; };
-  std::vector<int>& start = s.start;
-  std::vector<int>& order = s.order;
-  group_by(
-      pieces.size(), arr.vertices.size(), [&](size_t i) { return ends(int(i)).first; }, start,
-      order, s.fill);
-  for (size_t g = 0; g + 1 < start.size(); ++g)
-    if (start[g + 1] - start[g] > 1)
-      small_sort(order.begin() + start[g], order.begin() + start[g + 1], [&](int a, int b) {
-        const auto [a0, a1] = ends(a);
-        const auto [b0, b1] = ends(b);
-        return a0 != b0 ? a0 < b0 : a1 != b1 ? a1 < b1 : a < b;
-      });
-  arr.edges.reserve(pieces.size());
-  std::vector<int>& kept = s.kept;  // piece -> arrangement edge
-  kept.assign(pieces.size(), -1);
-  std::vector<Vec2>& kept_mid = s.kept_mid;  // midpoint of each edge kept so far, when needed
-  kept_mid.clear();
-  for (size_t i = 0; i < count; ++i) {
-    ArrangementEdge& e = pieces[order[i]];
-    const bool after_same = i > 0 && ends(order[i - 1]) == ends(order[i]);
-    const bool before_same = i + 1 < count && ends(order[i + 1]) == ends(order[i]);
-    if (!after_same && !before_same) {  // the only piece between its ends
-      kept[order[i]] = int(arr.edges.size());
-      arr.edges.push_back(std::move(e));
-      continue;
-    }
-    const Vec2 mid = point_at(e.curve, 0.5);
-    int into = -1;
-    for (size_t j = i; j-- > 0 && ends(order[j]) == ends(order[i]);) {
-      if (distance(kept_mid[kept[order[j]]], mid) <= eps) {
-        into = kept[order[j]];
-        break;
-      }
-    }
-    if (into < 0) {
-      kept[order[i]] = int(arr.edges.size());
-      kept_mid.resize(arr.edges.size() + 1);
-      kept_mid.back() = mid;
-      arr.edges.push_back(std::move(e));
-      continue;
-    }
-    ArrangementEdge& o = arr.edges[into];
-    kept[order[i]] = into;
-    const bool same_way =
-        o.u == e.u && o.v == e.v && (e.u != e.v || o.curve.sweep * e.curve.sweep > 0);
-    for (EdgeLabel l : e.labels)
-      o.labels.push_back({l.segment, same_way ? l.blocked_left : !l.blocked_left});
-  }
-}
-
+// The pieces of the curves between their split points, made into edges (edge_pieces.hpp).
 void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
-                 const std::vector<int>& ids, double eps, TrigMemo* trig) {
+                 const std::vector<int>& ids, double eps, TrigMemo* trig, bool peel) {
   const std::vector<SplitPoint>& splits = s.splits;
   const std::vector<int>& vertex_of = s.vertex_of;
   // Split points along each curve in order of (t, index): grouped by curve, then each
@@ -390,9 +314,7 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
   std::vector<ArrangementEdge>& pieces = s.pieces;
   pieces.clear();
   pieces.reserve(splits.size());
-  const bool leaving_out = !s.left_out.empty();
   for (size_t c = 0; c < curves.size(); ++c) {
-    if (leaving_out && s.left_out[c]) continue;
     const Curve& curve = curves[c];
     if (curve.is_segment()) direction = normalized(curve.to - curve.from);
     int cached = -1;  // the split point `at` describes
@@ -414,7 +336,7 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
                           from.point, at.point);
     }
   }
-  merge_coincident_edges(arr, s, eps);
+  edges_from_pieces(pieces, arr.vertices.size(), eps, peel, s.edge_pieces, arr.edges);
 }
 
 // The half-edges grouped by origin, as group_by(2 * edges, vertices, origin) groups them
@@ -773,7 +695,7 @@ ArrangementBuilder& ArrangementBuilder::operator=(ArrangementBuilder&&) noexcept
 const Arrangement& ArrangementBuilder::build(const std::vector<Curve>& curves,
                                              const std::vector<int>& segment_ids,
                                              const Tolerances& tol, TrigMemo* trig,
-                                             bool leave_out_lone_trees) {
+                                             bool peel_dangling_edges) {
   Arrangement& arr = arr_;
   Scratch& s = *scratch_;
   arr.vertices.clear();
@@ -781,12 +703,8 @@ const Arrangement& ArrangementBuilder::build(const std::vector<Curve>& curves,
   arr.cycles.clear();
   arr.cycle_half_edges.clear();
   split_points(curves, tol.geometric, s.split, s.splits);
-  if (leave_out_lone_trees)
-    find_lone_trees(curves, s.split.shared, s.lone_trees, s.left_out);
-  else
-    s.left_out.clear();
   merge_points(s, tol.geometric, arr.vertices);
-  build_edges(arr, s, curves, segment_ids, tol.geometric, trig);
+  build_edges(arr, s, curves, segment_ids, tol.geometric, trig, peel_dangling_edges);
   collect_meetings(s, curves.size());
   order_outgoing(arr, s, tol.geometric, tol.angular);
   link_half_edges(arr, s);

@@ -155,12 +155,12 @@ class ArrangementBuilder {
   // The arrangement of `curves` (each oriented with its blocked side on the left); label ids
   // are the curves' indices in `segment_ids`. Valid until the next build. `trig`, when
   // given, holds the sines, cosines and tangents the curves' maker took at their ends.
-  // With leave_out_lone_trees, the curves of lone trees (slice/lone_trees.hpp) make no
-  // edges, only vertices that nothing leaves: a slice's arrangement, whose blocked faces
-  // need not be told apart.
+  // With peel_dangling_edges, edges dangling into blocked faces are left out
+  // (slice/edge_pieces.hpp); their vertices stay, some with nothing leaving them: a slice's
+  // arrangement, whose blocked faces need not be told apart.
   const Arrangement& build(const std::vector<Curve>& curves, const std::vector<int>& segment_ids,
                            const Tolerances& tol, TrigMemo* trig = nullptr,
-                           bool leave_out_lone_trees = false);
+                           bool peel_dangling_edges = false);
   // The box of a cycle of the last build: the union of its edges' boxes, in the cycle's
   // order. Found when first asked.
   const Box& cycle_box(int cycle);
