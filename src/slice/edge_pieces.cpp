@@ -12,8 +12,11 @@ void order_by_ends(const std::vector<ArrangementEdge>& pieces, size_t vertices, 
   const size_t count = pieces.size();
   std::vector<std::pair<int, int>>& ends = s.end_pairs;  // compact: read many times
   ends.resize(count);
-  for (size_t i = 0; i < count; ++i)
+  s.segment_of.resize(count);
+  for (size_t i = 0; i < count; ++i) {
     ends[i] = {std::min(pieces[i].u, pieces[i].v), std::max(pieces[i].u, pieces[i].v)};
+    s.segment_of[i] = pieces[i].labels.front().segment;
+  }
   group_by(
       count, vertices, [&](size_t i) { return ends[i].first; }, s.start, s.order, s.fill);
   for (size_t g = 0; g + 1 < s.start.size(); ++g)
@@ -69,7 +72,7 @@ void assign_edges(const std::vector<ArrangementEdge>& pieces, double eps, PieceS
 // Per vertex, from the edges: degree, the xor of their ids (a vertex of degree one names its
 // edge), and whether they are simple (one-sided, naming at most two contact segments). A
 // loop adds two to its vertex's degree, and so never lets it be a leaf.
-void survey(const std::vector<ArrangementEdge>& pieces, size_t vertices, PieceScratch& s) {
+void survey(size_t vertices, PieceScratch& s) {
   const size_t edges = s.first.size();
   s.degree.assign(vertices, 0);
   s.edge_xor.assign(vertices, 0);
@@ -77,6 +80,7 @@ void survey(const std::vector<ArrangementEdge>& pieces, size_t vertices, PieceSc
   s.second_id.assign(vertices, -1);
   s.simple.assign(vertices, 1);
   s.one_sided.assign(edges, 1);
+  s.ends_xor.resize(edges);
   auto name = [&](int v, int id) {
     if (s.first_id[size_t(v)] < 0 || s.first_id[size_t(v)] == id)
       s.first_id[size_t(v)] = id;
@@ -86,32 +90,34 @@ void survey(const std::vector<ArrangementEdge>& pieces, size_t vertices, PieceSc
       s.simple[size_t(v)] = 0;
   };
   for (size_t k = 0; k < edges; ++k) {
-    const ArrangementEdge& e = pieces[size_t(s.first[k])];
-    name(e.u, e.labels.front().segment);
-    name(e.v, e.labels.front().segment);
-    if (e.u == e.v) {
-      s.degree[size_t(e.u)] += 2;
+    const size_t p = size_t(s.first[k]);
+    const auto [u, v] = s.end_pairs[p];
+    name(u, s.segment_of[p]);
+    name(v, s.segment_of[p]);
+    s.ends_xor[k] = u ^ v;
+    if (u == v) {
+      s.degree[size_t(u)] += 2;
       continue;
     }
-    ++s.degree[size_t(e.u)];
-    ++s.degree[size_t(e.v)];
-    s.edge_xor[size_t(e.u)] ^= int(k);
-    s.edge_xor[size_t(e.v)] ^= int(k);
+    ++s.degree[size_t(u)];
+    ++s.degree[size_t(v)];
+    s.edge_xor[size_t(u)] ^= int(k);
+    s.edge_xor[size_t(v)] ^= int(k);
   }
   for (const int p : s.merged) {
-    const ArrangementEdge& e = pieces[size_t(p)];
-    name(e.u, e.labels.front().segment);
-    name(e.v, e.labels.front().segment);
+    const auto [u, v] = s.end_pairs[size_t(p)];
+    name(u, s.segment_of[size_t(p)]);
+    name(v, s.segment_of[size_t(p)]);
     if (s.same_way[size_t(p)]) continue;
     s.one_sided[size_t(s.edge_of[size_t(p)])] = 0;
-    s.simple[size_t(e.u)] = s.simple[size_t(e.v)] = 0;
+    s.simple[size_t(u)] = s.simple[size_t(v)] = 0;
   }
 }
 
 // Peels edges from the simple leaves inward (peeled[k] = 1), as long as they are one-sided
 // and lead to a simple vertex.
-void peel_dangling(const std::vector<ArrangementEdge>& pieces, size_t vertices, PieceScratch& s) {
-  survey(pieces, vertices, s);
+void peel_dangling(size_t vertices, PieceScratch& s) {
+  survey(vertices, s);
   s.peeled.assign(s.first.size(), 0);
   s.leaves.clear();
   for (size_t v = 0; v < vertices; ++v)
@@ -121,8 +127,7 @@ void peel_dangling(const std::vector<ArrangementEdge>& pieces, size_t vertices, 
     s.leaves.pop_back();
     if (s.degree[size_t(v)] != 1) continue;  // its edge went from the other end
     const int k = s.edge_xor[size_t(v)];
-    const ArrangementEdge& e = pieces[size_t(s.first[size_t(k)])];
-    const int w = e.u == v ? e.v : e.u;
+    const int w = s.ends_xor[size_t(k)] ^ v;
     if (!s.one_sided[size_t(k)] || !s.simple[size_t(w)]) continue;
     s.peeled[size_t(k)] = 1;
     s.degree[size_t(v)] = 0;
@@ -137,7 +142,7 @@ void edges_from_pieces(std::vector<ArrangementEdge>& pieces, size_t vertices, do
                        PieceScratch& s, std::vector<ArrangementEdge>& edges) {
   order_by_ends(pieces, vertices, s);
   assign_edges(pieces, eps, s);
-  if (peel) peel_dangling(pieces, vertices, s);
+  if (peel) peel_dangling(vertices, s);
   const size_t count = s.first.size();
   s.index.resize(count);
   edges.reserve(edges.size() + count);

@@ -27,7 +27,8 @@ namespace cslice {
 
 // Working arrays of edges_from_pieces, kept between calls.
 struct PieceScratch {
-  std::vector<std::pair<int, int>> end_pairs;
+  std::vector<std::pair<int, int>> end_pairs;  // per piece: its lower end, then the other
+  std::vector<int> segment_of;                 // per piece: its label's contact segment
   std::vector<int> start, order, fill;
   std::vector<int> edge_of;  // per piece: its edge, before peeling
   std::vector<int> first;    // per edge: its first piece
@@ -35,6 +36,7 @@ struct PieceScratch {
   std::vector<int> merged;   // the pieces merged into an earlier one's edge, in order
   std::vector<char> same_way, one_sided, peeled;
   std::vector<int> degree, edge_xor, first_id, second_id, leaves, index;
+  std::vector<int> ends_xor;  // per edge: u ^ v (the other end from either)
   std::vector<char> simple;
 };
 
