@@ -86,7 +86,11 @@ struct ArrangementBuilder::Scratch {
   UnionFind uf;
   std::vector<int> start, along;
   std::vector<std::pair<double, int>> at_t;
-  std::vector<ArrangementEdge> pieces;
+  std::vector<Piece> pieces;
+  struct OnCurve {  // a split point's place on its curve, and the curve's tangent there
+    Vec2 point, tangent;
+  };
+  std::vector<OnCurve> on_curve;
   PieceScratch edge_pieces;
   Meetings meetings;
   struct Direction {
@@ -298,45 +302,49 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
   // Where each split point really is on its curve, and the curve's tangent there: one sine
   // and cosine per point of an arc (point_at and tangent_at, sharing the radial direction),
   // at an arc's ends the ones its maker took, when `trig` remembers them.
-  struct OnCurve {
-    Vec2 point, tangent;
-  };
   // A segment's tangent is the same everywhere: computed once per curve (`direction`).
   Vec2 direction;
   auto on_curve = [&](const Curve& c, double t) {
-    if (c.is_segment()) return OnCurve{point_at(c, t), direction};
+    if (c.is_segment()) return Scratch::OnCurve{point_at(c, t), direction};
     const double angle = c.start_angle + t * c.sweep;
     const Vec2 radial =
         trig && (t == 0.0 || t == 1.0) ? trig->unit_vector(angle) : unit_vector(angle);
     const Vec2 p = t == 0.0 ? c.from : t == 1.0 ? c.to : c.center + c.radius * radial;
-    return OnCurve{p, c.sweep > 0.0 ? perp_left(radial) : perp_right(radial)};
+    return Scratch::OnCurve{p, c.sweep > 0.0 ? perp_left(radial) : perp_right(radial)};
   };
-  std::vector<ArrangementEdge>& pieces = s.pieces;
+  std::vector<Piece>& pieces = s.pieces;
   pieces.clear();
-  pieces.reserve(splits.size());
+  std::vector<Scratch::OnCurve>& on = s.on_curve;  // per entry of at_t that starts or ends a piece
+  on.resize(count);
   for (size_t c = 0; c < curves.size(); ++c) {
     const Curve& curve = curves[c];
     if (curve.is_segment()) direction = normalized(curve.to - curve.from);
-    int cached = -1;  // the split point `at` describes
-    OnCurve at{};
+    int known = -1;  // the entry of at_t whose place `on` holds, from the piece before
     const int last = start[c + 1] - 1;
     for (int k = start[c]; k < last; ++k) {
       const auto [ta, a] = at_t[k];
       const auto [tb, b] = at_t[k + 1];
       // Consecutive points at one vertex make no edge, except a full circle's only piece.
       if (vertex_of[a] == vertex_of[b] && (!curve.is_full_circle() || tb - ta < 0.5)) continue;
-      const OnCurve from = cached == a ? at : on_curve(curve, ta);
-      at = on_curve(curve, tb);
-      cached = b;
-      const int u = vertex_of[a], v = vertex_of[b];
-      // Built in place, field by field (a default edge first, then assigned, wrote each
-      // field twice).
-      pieces.emplace_back(u, v, piece_of(curve, ta, tb, arr.vertices[u], arr.vertices[v], trig),
-                          EdgeLabels(EdgeLabel{ids[c], true}), int(c), from.tangent, at.tangent,
-                          from.point, at.point);
+      if (known != k) on[k] = on_curve(curve, ta);
+      on[k + 1] = on_curve(curve, tb);
+      known = k + 1;
+      pieces.push_back({vertex_of[a], vertex_of[b], ids[c], int(c), k});
     }
   }
-  edges_from_pieces(pieces, arr.vertices.size(), eps, peel, s.edge_pieces, arr.edges);
+  auto curve_of = [&](const Piece& p) {
+    return piece_of(curves[p.curve], at_t[p.at].first, at_t[p.at + 1].first, arr.vertices[p.u],
+                    arr.vertices[p.v], trig);
+  };
+  // Built in place, field by field (a default edge first, then assigned, wrote each field
+  // twice).
+  auto emit = [&](const Piece& p) {
+    arr.edges.emplace_back(p.u, p.v, curve_of(p), EdgeLabels(EdgeLabel{p.segment, true}), p.curve,
+                           on[p.at].tangent, on[p.at + 1].tangent, on[p.at].point,
+                           on[p.at + 1].point);
+  };
+  edges_from_pieces(pieces, arr.vertices.size(), eps, peel, curve_of, emit, s.edge_pieces,
+                    arr.edges);
 }
 
 // The half-edges grouped by origin, as group_by(2 * edges, vertices, origin) groups them

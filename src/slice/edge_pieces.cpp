@@ -8,15 +8,12 @@ namespace {
 
 // Pieces in the order of their end pairs (lower end, then the other), each group of equal
 // ends sorted by piece index: candidates for merging are neighbours.
-void order_by_ends(const std::vector<ArrangementEdge>& pieces, size_t vertices, PieceScratch& s) {
+void order_by_ends(const std::vector<Piece>& pieces, size_t vertices, PieceScratch& s) {
   const size_t count = pieces.size();
   std::vector<std::pair<int, int>>& ends = s.end_pairs;  // compact: read many times
   ends.resize(count);
-  s.segment_of.resize(count);
-  for (size_t i = 0; i < count; ++i) {
+  for (size_t i = 0; i < count; ++i)
     ends[i] = {std::min(pieces[i].u, pieces[i].v), std::max(pieces[i].u, pieces[i].v)};
-    s.segment_of[i] = pieces[i].labels.front().segment;
-  }
   group_by(
       count, vertices, [&](size_t i) { return ends[i].first; }, s.start, s.order, s.fill);
   for (size_t g = 0; g + 1 < s.start.size(); ++g)
@@ -28,7 +25,8 @@ void order_by_ends(const std::vector<ArrangementEdge>& pieces, size_t vertices, 
 // Assigns each piece its edge (edge_of): a new one, or that of an earlier piece with the same
 // ends and a midpoint within eps (then listed in `merged`, with whether it runs the same way
 // as the edge's first piece).
-void assign_edges(const std::vector<ArrangementEdge>& pieces, double eps, PieceScratch& s) {
+void assign_edges(const std::vector<Piece>& pieces, double eps,
+                  const std::function<Curve(const Piece&)>& curve_of, PieceScratch& s) {
   const size_t count = pieces.size();
   auto ends = [&](int i) { return s.end_pairs[size_t(i)]; };
   s.edge_of.assign(count, -1);
@@ -45,8 +43,9 @@ void assign_edges(const std::vector<ArrangementEdge>& pieces, double eps, PieceS
       s.first.push_back(p);
       continue;
     }
-    const ArrangementEdge& e = pieces[size_t(p)];
-    const Vec2 mid = point_at(e.curve, 0.5);
+    const Piece& e = pieces[size_t(p)];
+    const Curve curve = curve_of(e);
+    const Vec2 mid = point_at(curve, 0.5);
     int into = -1;
     for (size_t j = i; j-- > 0 && ends(s.order[j]) == ends(p);) {
       if (distance(s.mid[size_t(s.edge_of[size_t(s.order[j])])], mid) <= eps) {
@@ -61,10 +60,10 @@ void assign_edges(const std::vector<ArrangementEdge>& pieces, double eps, PieceS
       s.first.push_back(p);
       continue;
     }
-    const ArrangementEdge& o = pieces[size_t(s.first[size_t(into)])];
+    const Piece& o = pieces[size_t(s.first[size_t(into)])];
     s.edge_of[size_t(p)] = into;
     s.same_way[size_t(p)] =
-        o.u == e.u && o.v == e.v && (e.u != e.v || o.curve.sweep * e.curve.sweep > 0);
+        o.u == e.u && o.v == e.v && (e.u != e.v || curve_of(o).sweep * curve.sweep > 0);
     s.merged.push_back(p);
   }
 }
@@ -72,7 +71,7 @@ void assign_edges(const std::vector<ArrangementEdge>& pieces, double eps, PieceS
 // Per vertex, from the edges: degree, the xor of their ids (a vertex of degree one names its
 // edge), and whether they are simple (one-sided, naming at most two contact segments). A
 // loop adds two to its vertex's degree, and so never lets it be a leaf.
-void survey(size_t vertices, PieceScratch& s) {
+void survey(const std::vector<Piece>& pieces, size_t vertices, PieceScratch& s) {
   const size_t edges = s.first.size();
   s.degree.assign(vertices, 0);
   s.edge_xor.assign(vertices, 0);
@@ -92,8 +91,8 @@ void survey(size_t vertices, PieceScratch& s) {
   for (size_t k = 0; k < edges; ++k) {
     const size_t p = size_t(s.first[k]);
     const auto [u, v] = s.end_pairs[p];
-    name(u, s.segment_of[p]);
-    name(v, s.segment_of[p]);
+    name(u, pieces[p].segment);
+    name(v, pieces[p].segment);
     s.ends_xor[k] = u ^ v;
     if (u == v) {
       s.degree[size_t(u)] += 2;
@@ -106,8 +105,8 @@ void survey(size_t vertices, PieceScratch& s) {
   }
   for (const int p : s.merged) {
     const auto [u, v] = s.end_pairs[size_t(p)];
-    name(u, s.segment_of[size_t(p)]);
-    name(v, s.segment_of[size_t(p)]);
+    name(u, pieces[size_t(p)].segment);
+    name(v, pieces[size_t(p)].segment);
     if (s.same_way[size_t(p)]) continue;
     s.one_sided[size_t(s.edge_of[size_t(p)])] = 0;
     s.simple[size_t(u)] = s.simple[size_t(v)] = 0;
@@ -116,8 +115,8 @@ void survey(size_t vertices, PieceScratch& s) {
 
 // Peels edges from the simple leaves inward (peeled[k] = 1), as long as they are one-sided
 // and lead to a simple vertex.
-void peel_dangling(size_t vertices, PieceScratch& s) {
-  survey(vertices, s);
+void peel_dangling(const std::vector<Piece>& pieces, size_t vertices, PieceScratch& s) {
+  survey(pieces, vertices, s);
   s.peeled.assign(s.first.size(), 0);
   s.leaves.clear();
   for (size_t v = 0; v < vertices; ++v)
@@ -138,11 +137,13 @@ void peel_dangling(size_t vertices, PieceScratch& s) {
 
 }  // namespace
 
-void edges_from_pieces(std::vector<ArrangementEdge>& pieces, size_t vertices, double eps, bool peel,
-                       PieceScratch& s, std::vector<ArrangementEdge>& edges) {
+void edges_from_pieces(const std::vector<Piece>& pieces, size_t vertices, double eps, bool peel,
+                       const std::function<Curve(const Piece&)>& curve_of,
+                       const std::function<void(const Piece&)>& emit, PieceScratch& s,
+                       std::vector<ArrangementEdge>& edges) {
   order_by_ends(pieces, vertices, s);
-  assign_edges(pieces, eps, s);
-  if (peel) peel_dangling(vertices, s);
+  assign_edges(pieces, eps, curve_of, s);
+  if (peel) peel_dangling(pieces, vertices, s);
   const size_t count = s.first.size();
   s.index.resize(count);
   edges.reserve(edges.size() + count);
@@ -152,14 +153,12 @@ void edges_from_pieces(std::vector<ArrangementEdge>& pieces, size_t vertices, do
       continue;
     }
     s.index[k] = int(edges.size());
-    edges.push_back(std::move(pieces[size_t(s.first[k])]));
+    emit(pieces[size_t(s.first[k])]);
   }
   for (const int p : s.merged) {
     const int k = s.index[size_t(s.edge_of[size_t(p)])];
-    if (k < 0) continue;
-    const bool same_way = s.same_way[size_t(p)];
-    for (const EdgeLabel l : pieces[size_t(p)].labels)
-      edges[size_t(k)].labels.push_back({l.segment, same_way ? l.blocked_left : !l.blocked_left});
+    if (k >= 0)
+      edges[size_t(k)].labels.push_back({pieces[size_t(p)].segment, bool(s.same_way[size_t(p)])});
   }
 }
 

@@ -18,6 +18,7 @@
 // no candidate before peeling or after.
 #pragma once
 
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -25,10 +26,16 @@
 
 namespace cslice {
 
+// A piece of a curve between two consecutive vertices along it, before it is an edge: its
+// ends, its label's contact segment (blocked on its left), its curve and where along that
+// curve it starts (the caller's index; it ends at the next).
+struct Piece {
+  int u, v, segment, curve, at;
+};
+
 // Working arrays of edges_from_pieces, kept between calls.
 struct PieceScratch {
   std::vector<std::pair<int, int>> end_pairs;  // per piece: its lower end, then the other
-  std::vector<int> segment_of;                 // per piece: its label's contact segment
   std::vector<int> start, order, fill;
   std::vector<int> edge_of;  // per piece: its edge, before peeling
   std::vector<int> first;    // per edge: its first piece
@@ -40,11 +47,14 @@ struct PieceScratch {
   std::vector<char> simple;
 };
 
-// Appends to `edges` the edges the pieces make (each piece has one label, blocked on its
-// left, and ends u and v among `vertices` vertices); pieces are moved from. Coincident
-// pieces (same ends, midpoints within eps) make one edge. With peel, dangling edges are left
-// out. Edges come in the order of their lower end vertex, then their other one.
-void edges_from_pieces(std::vector<ArrangementEdge>& pieces, size_t vertices, double eps, bool peel,
-                       PieceScratch& scratch, std::vector<ArrangementEdge>& edges);
+// Makes the edges of the pieces: `emit(p)` appends to `edges` the edge of piece p, the first
+// of its coincident ones (same ends, midpoints within eps), and the others' labels are added
+// to it. With peel, dangling edges are not emitted. Edges come in the order of their lower
+// end vertex, then their other one. `curve_of(p)` is the piece's curve, asked only of pieces
+// that share both ends with another.
+void edges_from_pieces(const std::vector<Piece>& pieces, size_t vertices, double eps, bool peel,
+                       const std::function<Curve(const Piece&)>& curve_of,
+                       const std::function<void(const Piece&)>& emit, PieceScratch& scratch,
+                       std::vector<ArrangementEdge>& edges);
 
 }  // namespace cslice
