@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <iterator>
 #include <optional>
 #include <span>
 
@@ -302,6 +303,19 @@ class NormalIndex {
         for (size_t b = from; b < to; ++b) bits |= masks_[b];
       });
       for (bits &= allowed; bits != 0; bits &= bits - 1) out.push_back(std::countr_zero(bits));
+      return;
+    }
+    // Only short runs and a query of one or two buckets (most of a smooth contour's): their
+    // lists, each in feature order, merged.
+    if (classes_.empty() && whole_circle_.empty() && r.count <= 2) {
+      if (r.count == 0) return;
+      const std::span<const int> a = bucket(r.first);
+      if (r.count == 1) {
+        out.assign(a.begin(), a.end());
+        return;
+      }
+      const std::span<const int> b = bucket(r.first + 1 == bucket_count_ ? 0 : r.first + 1);
+      std::set_union(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
       return;
     }
     // Marked in a bitmap of the features, then read back in feature order, word by word over
