@@ -126,13 +126,18 @@ class SliceBuilder {
         blocked_[f] = true;
         continue;
       }
+      const bool unbounded = !arr_->faces[f].bounded;
       Box box;
       for (int c : arr_->face_cycles(int(f))) box.add(scratch_.arrangements.cycle_box(c));
+      // Every edge peeled (dangling in the unbounded face): beyond the curves instead.
+      if (unbounded && box.empty())
+        for (const Curve& c : scratch_.curves) box.add(bounding_box(c));
       samples_[f] = face_sample(*arr_, int(f), box, pair_.tol, scratch_.face_sample);
       // Blocked space lies inside the box of all contact segments, and the unbounded face's
       // sample lies beyond it: there the parts are apart, inside an enclosure's material when
-      // the fixed part is one. Only an empty arrangement needs the direct test.
-      if (!arr_->faces[f].bounded && !arr_->edges.empty())
+      // the fixed part is one. Only with no curve in the arrangement (no contact segment, or
+      // each proven blocked) is the direct test needed.
+      if (unbounded && !scratch_.curves.empty())
         blocked_[f] = pair_.fixed.enclosure;
       else
         blocked_[f] = blocked_at(samples_[f]);
