@@ -14,8 +14,10 @@
 #include "contacts/contact_features.hpp"
 #include "cslice/slice.hpp"
 #include "slice/arrangement.hpp"
+#include "slice/edge_pieces.hpp"
 #include "slice/small_sort.hpp"
 #include "slice/split_points.hpp"
+#include "support/designed_pairs.hpp"
 #include "support/random_parts.hpp"
 #include "support/random_polygons.hpp"
 
@@ -246,6 +248,80 @@ TEST(SliceFastPaths, DanglingEdgesArePeeledOffTheSlicesArrangement) {
   ids.push_back(int(ids.size()));
   EXPECT_EQ(builder.build(curves, ids, tol, nullptr, true).edges.size(), 12u);
   EXPECT_EQ(builder.build(curves, ids, tol).edges.size(), 20u);
+}
+
+// Slices with dangling edges peeled and kept are the same bit for bit, but for the blocked
+// area's last bits (each dangling edge adds and takes back its area term): contact segments,
+// realizable pieces, free components with their samples and boundaries, the contact graph and
+// degenerate contacts. On rough stars (a third of their edges dangle), random curved pairs,
+// designed pairs (perfect fits and sliding fits: vertices the peeling must stop at) and gears.
+TEST(SliceFastPaths, PeelingDanglingEdgesChangesNoSlice) {
+  struct PeelingGuard {
+    ~PeelingGuard() { set_slice_peeling(true); }
+  } guard;
+  std::vector<Pair> pairs;
+  for (int n : {20, 60, 120})
+    pairs.push_back(
+        testkit::accepted_star_pair(n, 0.3 * kTwoPi / n, 0.0, 500 + unsigned(n), 1, 76, "rough")
+            .pair);
+  pairs.push_back(testkit::curved_star_pair(40));
+  std::mt19937 rng(23);
+  for (int i = 0; i < 20; ++i)
+    pairs.push_back(testkit::random_pair(rng, 4 + i % 6, 5 + i % 7, i % 3 == 0).pair);
+  for (unsigned seed = 1; seed <= 80; ++seed) pairs.push_back(testkit::designed_pair(seed).pair);
+  pairs.push_back(testkit::gear_pair(8));
+  auto same_curve = [](const Curve& a, const Curve& b) {
+    return a.from == b.from && a.to == b.to && a.center == b.center && a.radius == b.radius &&
+           a.sweep == b.sweep;
+  };
+  int buried = 0;
+  for (size_t p = 0; p < pairs.size(); ++p) {
+    for (const double theta : {0.3, 1.1, 2.6, -2.0}) {
+      set_slice_peeling(false);
+      const Slice kept = compute_slice(pairs[p], theta);
+      set_slice_peeling(true);
+      const Slice peeled = compute_slice(pairs[p], theta);
+      const std::string where = "pair " + std::to_string(p) + " theta " + std::to_string(theta);
+      ASSERT_EQ(kept.contact_segments.size(), peeled.contact_segments.size()) << where;
+      ASSERT_EQ(kept.realizable.size(), peeled.realizable.size()) << where;
+      for (size_t i = 0; i < kept.realizable.size(); ++i) {
+        EXPECT_EQ(kept.realizable[i].segment, peeled.realizable[i].segment) << where;
+        EXPECT_TRUE(same_curve(kept.realizable[i].curve, peeled.realizable[i].curve)) << where;
+      }
+      ASSERT_EQ(kept.free_components.size(), peeled.free_components.size()) << where;
+      for (size_t c = 0; c < kept.free_components.size(); ++c) {
+        const FreeComponent &a = kept.free_components[c], &b = peeled.free_components[c];
+        EXPECT_EQ(a.bounded, b.bounded) << where;
+        EXPECT_TRUE(a.area == b.area || (std::isnan(a.area) && std::isnan(b.area))) << where;
+        EXPECT_EQ(a.sample, b.sample) << where;
+        ASSERT_EQ(a.boundary.size(), b.boundary.size()) << where;
+        for (size_t k = 0; k < a.boundary.size(); ++k) {
+          ASSERT_EQ(a.boundary[k].size(), b.boundary[k].size()) << where;
+          for (size_t i = 0; i < a.boundary[k].size(); ++i)
+            EXPECT_TRUE(same_curve(a.boundary[k][i].curve, b.boundary[k][i].curve)) << where;
+        }
+      }
+      EXPECT_EQ(kept.contact_graph.nodes, peeled.contact_graph.nodes) << where;
+      ASSERT_EQ(kept.contact_graph.edges.size(), peeled.contact_graph.edges.size()) << where;
+      for (size_t i = 0; i < kept.contact_graph.edges.size(); ++i) {
+        EXPECT_EQ(kept.contact_graph.edges[i].a, peeled.contact_graph.edges[i].a) << where;
+        EXPECT_EQ(kept.contact_graph.edges[i].b, peeled.contact_graph.edges[i].b) << where;
+        EXPECT_EQ(kept.contact_graph.edges[i].at, peeled.contact_graph.edges[i].at) << where;
+      }
+      ASSERT_EQ(kept.degenerate.size(), peeled.degenerate.size()) << where;
+      for (size_t i = 0; i < kept.degenerate.size(); ++i)
+        EXPECT_EQ(kept.degenerate[i].segments, peeled.degenerate[i].segments) << where;
+      if (std::isinf(kept.blocked_area))
+        EXPECT_EQ(kept.blocked_area, peeled.blocked_area) << where;
+      else
+        EXPECT_NEAR(kept.blocked_area, peeled.blocked_area,
+                    1e-12 * std::max(1.0, std::fabs(kept.blocked_area)))
+            << where;
+      // Contact segments wholly in blocked space, where edges dangle: enough to matter.
+      buried += int(kept.contact_segments.size() - realizable_segments(kept).size());
+    }
+  }
+  EXPECT_GT(buried, 2000);
 }
 
 // compute_slice keeps its buffers on the thread between calls, up to about 64 MB: those of a

@@ -1,10 +1,14 @@
 #include "slice/edge_pieces.hpp"
 
+#include <atomic>
+
 #include "slice/group_by.hpp"
 #include "slice/small_sort.hpp"
 
 namespace cslice {
 namespace {
+
+std::atomic<bool> g_peeling{true};
 
 // Pieces in the order of their end pairs (lower end, then the other), each group of equal
 // ends sorted by piece index: candidates for merging are neighbours.
@@ -136,6 +140,13 @@ void peel_dangling(const std::vector<Piece>& pieces, size_t vertices, PieceScrat
 }
 
 }  // namespace
+
+void set_slice_peeling(bool on) {
+  g_peeling.store(on);
+}
+bool slice_peeling() {
+  return g_peeling.load(std::memory_order_relaxed);
+}
 
 void edges_from_pieces(const std::vector<Piece>& pieces, size_t vertices, double eps, bool peel,
                        const std::function<Curve(const Piece&)>& curve_of,

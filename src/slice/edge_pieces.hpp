@@ -47,6 +47,10 @@ struct PieceScratch {
   std::vector<char> simple;
 };
 
+// For tests: whether slices peel dangling edges (the default) or keep them. Process-wide.
+void set_slice_peeling(bool on);
+bool slice_peeling();
+
 // Makes the edges of the pieces: `emit(p)` appends to `edges` the edge of piece p, the first
 // of its coincident ones (same ends, midpoints within eps), and the others' labels are added
 // to it. With peel, dangling edges are not emitted. Edges come in the order of their lower

@@ -16,6 +16,7 @@
 #include "cslice/slice.hpp"
 #include "slice/arrangement.hpp"
 #include "slice/blocked_proof.hpp"
+#include "slice/edge_pieces.hpp"
 #include "slice/face_sample.hpp"
 #include "slice/small_sort.hpp"
 
@@ -88,7 +89,7 @@ class SliceBuilder {
       curves.push_back(s.curve);
       ids.push_back(s.id);
     }
-    arr_ = &scratch_.arrangements.build(curves, ids, pair_.tol, &contacts_.trig(), true);
+    arr_ = &scratch_.arrangements.build(curves, ids, pair_.tol, &contacts_.trig(), slice_peeling());
     summarize_labels();
     label_faces();
     find_realizable_edges();
