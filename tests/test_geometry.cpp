@@ -166,6 +166,9 @@ TEST(SegmentSegment, ASharedEndIsTheExactHit) {
   const Curve bar = make_segment({0, 0}, {1, 0}), back = make_segment({1, 0}, {0.5, 1e-12});
   EXPECT_EQ(intersect(bar, back, kEps).kind, IntersectionKind::overlapping);
   // The same answer without building the intersection, as the slice's split points ask it.
+  auto segments_meet_end_to_end = [](const Curve& x, const Curve& y, double eps) {
+    return segment_pair_shortcut(x, y, eps) == SegmentPairShortcut::end_to_end;
+  };
   EXPECT_TRUE(segments_meet_end_to_end(a, b, kEps));
   EXPECT_TRUE(segments_meet_end_to_end(b, c, kEps));
   EXPECT_FALSE(segments_meet_end_to_end(bar, back, kEps));

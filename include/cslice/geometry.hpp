@@ -348,7 +348,6 @@ Intersection intersect_segment_segment(const Curve& a, const Curve& b, double ep
 // - needs_intersection: anything else, arcs included.
 enum class SegmentPairShortcut { end_to_end, apart, needs_intersection };
 SegmentPairShortcut segment_pair_shortcut(const Curve& a, const Curve& b, double eps);
-bool segments_meet_end_to_end(const Curve& a, const Curve& b, double eps);
 Intersection intersect_segment_arc(const Curve& segment, const Curve& arc, double eps);
 Intersection intersect_arc_arc(const Curve& a, const Curve& b, double eps);
 // The two crossing points of circles (c1, r1) and (c2, r2) at centre distance d > 0, computed

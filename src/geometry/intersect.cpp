@@ -221,7 +221,7 @@ SharedEnd shared_end(const Curve& a, const Curve& b) {
 // How two segments lie to each other's carriers: their directions and lengths, and how far
 // each end is off the other's carrier times the other's length (near_carrier's very
 // products). Within eps of one carrier, both are collinear: one rule for
-// intersect_segment_segment and segments_meet_end_to_end.
+// intersect_segment_segment and segment_pair_shortcut.
 struct SegmentOffsets {
   Vec2 da, db;
   double la, lb;
@@ -303,10 +303,6 @@ SegmentPairShortcut segment_pair_shortcut(const Curve& a, const Curve& b, double
                                 : SegmentPairShortcut::needs_intersection;
 }
 
-bool segments_meet_end_to_end(const Curve& a, const Curve& b, double eps) {
-  return segment_pair_shortcut(a, b, eps) == SegmentPairShortcut::end_to_end;
-}
-
 // Segment a(t) = a.from + t (a.to - a.from) against b(u) likewise. Parallel carriers within
 // eps overlap (a piece, or a tangent point when they only touch end to end); otherwise the
 // unique crossing of the carriers counts when it lies within eps of both segments.
@@ -317,7 +313,7 @@ Intersection intersect_segment_segment(const Curve& a, const Curve& b, double ep
     collinear_overlap(r, a, b, eps);
   } else if (const SharedEnd end = shared_end(a, b); end.shared) {
     // The general steps below would find this one point (up to round-off) and nothing else
-    // (segments_meet_end_to_end). Contact segments meeting end to end in a chain share
+    // (segment_pair_shortcut's end_to_end). Contact segments meeting end to end in a chain share
     // their ends bit for bit, and most candidate pairs of a slice are such neighbours.
     r.hits[r.count++] = point_hit(end.at, end.ta, end.tb, false);
   } else {

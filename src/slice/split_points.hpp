@@ -36,7 +36,7 @@ struct SplitsByCurve {
 // Two curves that meet, and where they may run within eps of each other: a piece shared by
 // both (collinear or co-circular within eps), as parameter ranges, or, for curves meeting at
 // points, their whole ranges (near = true: only points within eps of the other count).
-// end_to_end: segments_meet_end_to_end said they share an end and are not collinear.
+// end_to_end: segment_pair_shortcut said they share an end and are not collinear.
 struct SharedPiece {
   int a, b;
   double a_lo, a_hi, b_lo, b_hi;
