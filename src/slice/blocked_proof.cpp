@@ -46,15 +46,11 @@ bool add_covers_unit(std::vector<BlockedProof::Span>& merged, BlockedProof::Span
 // eighteenth session).
 constexpr int kArcHalvings = 3;
 
-bool is_line_target(const ContactSegment& s) {
-  return !s.is_point && s.curve.is_segment();
-}
-
-// Where a target's cell is found: a line's midpoint, an arc's box's centre.
-Vec2 target_point(const Curve& c) {
-  if (c.is_segment()) return 0.5 * (c.from + c.to);
-  const Box b = bounding_box(c);
-  return 0.5 * (b.lo + b.hi);
+Box segment_box(Vec2 a, Vec2 b) {
+  Box box;
+  box.add(a);
+  box.add(b);
+  return box;
 }
 
 }  // namespace
@@ -146,13 +142,14 @@ BlockedProof::CellRange BlockedProof::cells(const Box& b) const {
 void BlockedProof::find(const std::vector<ContactSegment>& segments, const PairRegions& regions,
                         double margin, std::vector<char>& proven) {
   proven.assign(segments.size(), 0);
-  add_slabs(segments, regions, margin);
+  collect(segments, regions, margin);
   if (slabs_.empty()) return;
-  index_slabs(segments);
-  order_targets(segments);
+  index_slabs();
+  order_targets();
   stamp_.assign(slabs_.size(), -1);
   query_ = -1;
   hint_ = -1;
+  recent_.clear();
   for (const Target& t : targets_) {
     const bool held = t.line ? covered(t.from, t.to, t.id)
                              : covered_arc(ArcTarget(segments[size_t(t.id)].curve), 0);
@@ -165,12 +162,25 @@ void BlockedProof::find(const std::vector<ContactSegment>& segments, const PairR
 // segment at one point of its boundary, the same all along the contact segment (src/contacts:
 // the segment shifted, or turned through theta + pi, whole). So a slab's frame is its contact
 // segment's: start, direction, and material on the left (the blocked side).
-void BlockedProof::add_slabs(const std::vector<ContactSegment>& segments,
-                             const PairRegions& regions, double margin) {
+//
+// The targets (every contact segment but a point) and the box of them all are taken in the
+// same pass: at a thousand vertices a side the contact segments outgrow the cache, and each
+// pass over them cost as much as a tenth of the proof.
+void BlockedProof::collect(const std::vector<ContactSegment>& segments, const PairRegions& regions,
+                           double margin) {
   slabs_.clear();
   slab_boxes_.clear();
+  unordered_.clear();
+  target_points_.clear();
+  all_ = Box{};
   for (const ContactSegment& s : segments) {
-    if (!is_line_target(s)) continue;
+    if (s.is_point) continue;
+    const bool line = s.curve.is_segment();
+    const Box target_box = line ? segment_box(s.curve.from, s.curve.to) : bounding_box(s.curve);
+    all_.add(target_box);
+    unordered_.push_back({s.curve.from, s.curve.to, s.id, line});
+    target_points_.push_back(0.5 * (target_box.lo + target_box.hi));
+    if (!line) continue;
     const MaterialRegion* region =
         s.kind == ContactKind::vertex_segment || s.kind == ContactKind::arc_segment
             ? &regions.fixed[size_t(s.fixed_feature)]
@@ -201,20 +211,37 @@ void BlockedProof::add_slabs(const std::vector<ContactSegment>& segments,
     box.add(world(region->end_at(region->depth, length)));
     slabs_.push_back(slab);
     slab_boxes_.push_back(box);
+    all_.add(box);
   }
+}
+
+// The slabs, deepest first, in kDepthClasses classes of equal width: each cell lists its
+// slabs in this order. A deep slab holds more of a target crossing it, so the spans that
+// cover a target come sooner: a third fewer slabs tested on rough stars of 1,000 vertices
+// a side, a sixth fewer at 300, at the cost of a counting sort.
+void BlockedProof::order_by_depth() {
+  constexpr int kDepthClasses = 256;
+  double deepest = 0.0;
+  for (const Slab& s : slabs_) deepest = std::max(deepest, s.high);
+  const double per_class = deepest > 0.0 ? (kDepthClasses - 1) / deepest : 0.0;
+  depth_start_.assign(kDepthClasses + 1, 0);
+  depth_class_.resize(slabs_.size());
+  for (size_t k = 0; k < slabs_.size(); ++k) {
+    const int c = kDepthClasses - 1 - int(slabs_[k].high * per_class);
+    ++depth_start_[size_t(depth_class_[k] = c) + 1];
+  }
+  for (size_t c = 1; c < depth_start_.size(); ++c) depth_start_[c] += depth_start_[c - 1];
+  by_depth_.resize(slabs_.size());
+  for (size_t k = 0; k < slabs_.size(); ++k)
+    by_depth_[size_t(depth_start_[size_t(depth_class_[k])]++)] = int(k);
 }
 
 // A uniform grid of cells about as wide as the average slab, each listing the slabs whose
 // boxes overlap it.
-void BlockedProof::index_slabs(const std::vector<ContactSegment>& segments) {
-  Box all;
+void BlockedProof::index_slabs() {
+  const Box& all = all_;
   double extent = 0.0;
-  for (const Box& b : slab_boxes_) {
-    all.add(b);
-    extent += 0.5 * (b.hi.x - b.lo.x + b.hi.y - b.lo.y);
-  }
-  for (const ContactSegment& s : segments)
-    if (!s.is_point) all.add(bounding_box(s.curve));
+  for (const Box& b : slab_boxes_) extent += 0.5 * (b.hi.x - b.lo.x + b.hi.y - b.lo.y);
   const double n = double(slabs_.size());
   const double w = all.hi.x - all.lo.x, h = all.hi.y - all.lo.y;
   // At least as wide as a quarter of the slabs' number of cells would fill the whole box.
@@ -240,38 +267,39 @@ void BlockedProof::index_slabs(const std::vector<ContactSegment>& segments) {
   cell_slabs_.resize(size_t(cell_start_.back()));
   cell_boxes_.resize(size_t(cell_start_.back()));
   fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
-  for (size_t k = 0; k < slabs_.size(); ++k) {
-    const CellRange r = slab_cells_[k];
+  order_by_depth();
+  for (const int k : by_depth_) {
+    const CellRange r = slab_cells_[size_t(k)];
     for (int y = r.y0; y <= r.y1; ++y)
       for (int x = r.x0; x <= r.x1; ++x) {
         const size_t at = size_t(fill_[size_t(y) * size_t(columns_) + size_t(x)]++);
-        cell_slabs_[at] = int(k);
-        cell_boxes_[at] = slab_boxes_[k];
+        cell_slabs_[at] = k;
+        cell_boxes_[at] = slab_boxes_[size_t(k)];
       }
   }
 }
 
-// The targets (every contact segment but a point) by the cell of target_point, rows walked
-// back and forth: neighbours follow each other, and the slab that covered one is tried first
-// on the next.
-void BlockedProof::order_targets(const std::vector<ContactSegment>& segments) {
-  auto cell_of = [&](const Curve& c) {
-    Box mid;
-    mid.add(target_point(c));
-    const CellRange r = cells(mid);
-    return size_t(r.y0) * size_t(columns_) + size_t(r.y0 % 2 == 0 ? r.x0 : columns_ - 1 - r.x0);
-  };
+// The row-by-row walk of the grid's cells, rows back and forth: cells next to each other in
+// the walk are neighbours.
+size_t BlockedProof::walk_index(Vec2 p) const {
+  Box at;
+  at.add(p);
+  const CellRange r = cells(at);
+  return size_t(r.y0) * size_t(columns_) + size_t(r.y0 % 2 == 0 ? r.x0 : columns_ - 1 - r.x0);
+}
+
+// The targets by the cell of their box's centre in the walk: neighbours follow each other,
+// and the slabs that covered one are tried first on the next.
+void BlockedProof::order_targets() {
+  const size_t n = unordered_.size();
   target_start_.assign(size_t(columns_) * size_t(rows_) + 1, 0);
-  target_cells_.clear();
-  for (const ContactSegment& s : segments)
-    if (!s.is_point) ++target_start_[target_cells_.emplace_back(cell_of(s.curve)) + 1];
+  target_cells_.resize(n);
+  for (size_t k = 0; k < n; ++k)
+    ++target_start_[(target_cells_[k] = walk_index(target_points_[k])) + 1];
   for (size_t c = 1; c < target_start_.size(); ++c) target_start_[c] += target_start_[c - 1];
-  targets_.resize(size_t(target_start_.back()));
-  size_t k = 0;
-  for (const ContactSegment& s : segments)
-    if (!s.is_point)
-      targets_[size_t(target_start_[target_cells_[k++]]++)] = {s.curve.from, s.curve.to, s.id,
-                                                               s.curve.is_segment()};
+  targets_.resize(n);
+  for (size_t k = 0; k < n; ++k)
+    targets_[size_t(target_start_[target_cells_[k]]++)] = unordered_[k];
 }
 
 namespace {
@@ -308,29 +336,35 @@ bool holds_arc(const Slab& s, const ArcTarget& arc) {
 
 }  // namespace
 
-// Calls stop(j) once for each slab j whose box overlaps b, until it returns true; whether
-// it did.
+// Slabs whose boxes are checked before the first of them is tested: 8 to 32 take 12% off
+// rough stars of 1,000 vertices a side against a whole cell at once, and are even at 300.
+constexpr int kSlabsPerBatch = 16;
+
+// Calls stop(j) once for each slab j whose box overlaps b and whose stamp is not the
+// current query's, until it returns true; whether it did.
 template <class Stop>
 bool BlockedProof::any_slab_near(const Box& b, Stop stop) {
   const CellRange r = cells(b);
-  ++query_;
   for (int y = r.y0; y <= r.y1; ++y)
     for (int x = r.x0; x <= r.x1; ++x) {
       const size_t cell = size_t(y) * size_t(columns_) + size_t(x);
       // The slabs whose boxes overlap first, without a branch on each box: half of them
-      // overlap, and which ones follows no pattern a branch predictor finds.
+      // overlap, and which ones follows no pattern a branch predictor finds. A few at a
+      // time: the deep slabs come first, and often cover the target before the rest.
       const int begin = cell_start_[cell], end = cell_start_[cell + 1];
       int* near = near_.data();
-      size_t count = 0;
-      for (int k = begin; k < end; ++k) {
-        near[count] = cell_slabs_[size_t(k)];
-        count += size_t(cell_boxes_[size_t(k)].overlaps(b));
-      }
-      for (size_t i = 0; i < count; ++i) {
-        const int j = near[i];
-        if (stamp_[size_t(j)] == query_) continue;  // met in an earlier cell
-        stamp_[size_t(j)] = query_;
-        if (stop(j)) return true;
+      for (int chunk = begin; chunk < end; chunk += kSlabsPerBatch) {
+        size_t count = 0;
+        for (int k = chunk, stop_at = std::min(end, chunk + kSlabsPerBatch); k < stop_at; ++k) {
+          near[count] = cell_slabs_[size_t(k)];
+          count += size_t(cell_boxes_[size_t(k)].overlaps(b));
+        }
+        for (size_t i = 0; i < count; ++i) {
+          const int j = near[i];
+          if (stamp_[size_t(j)] == query_) continue;  // met in an earlier cell
+          stamp_[size_t(j)] = query_;
+          if (stop(j)) return true;
+        }
       }
     }
   return false;
@@ -341,6 +375,7 @@ bool BlockedProof::any_slab_near(const Box& b, Stop stop) {
 // slab, cover it with the margin all along.
 bool BlockedProof::covered_arc(const ArcTarget& arc, int halvings) {
   if (hint_ >= 0 && holds_arc(slabs_[size_t(hint_)], arc)) return true;
+  ++query_;
   const bool held = any_slab_near(arc_bounding_box(arc.arc), [&](int j) {
     if (!holds_arc(slabs_[size_t(j)], arc)) return false;
     hint_ = j;
@@ -354,26 +389,38 @@ bool BlockedProof::covered_arc(const ArcTarget& arc, int halvings) {
 
 // Whether the target is covered end to end by the slabs of other contact segments. One slab
 // often covers it whole; else the spans of the slabs near it are merged as they are found,
-// until they cover it (so a target left unproven is the only one that reads them all).
+// until they cover it (so a target left unproven is the only one that reads them all). The
+// slabs that gave spans to the last target proven are tried first: the targets come in
+// walk order, and neighbours are mostly covered by the same few slabs.
 bool BlockedProof::covered(Vec2 p0, Vec2 p1, int id) {
   Span span;
   bool whole = false;
-  if (hint_ >= 0 && slabs_[size_t(hint_)].segment != id &&
-      inside(slabs_[size_t(hint_)], p0, p1, span, whole) && whole)
-    return true;
-  Box b;
-  b.add(p0);
-  b.add(p1);
   spans_.clear();
-  return any_slab_near(b, [&](int j) {
+  giving_.clear();
+  ++query_;
+  auto try_slab = [&](int j) {
     const Slab& s = slabs_[size_t(j)];
     if (s.segment == id || !inside(s, p0, p1, span, whole)) return false;
     if (whole) {
-      hint_ = j;
+      giving_.assign(1, j);
       return true;
     }
+    giving_.push_back(j);
     return add_covers_unit(spans_, span);
-  });
+  };
+  bool held = false;
+  for (int j : recent_) {
+    stamp_[size_t(j)] = query_;
+    if ((held = try_slab(j))) break;
+  }
+  if (!held) {
+    Box b;
+    b.add(p0);
+    b.add(p1);
+    held = any_slab_near(b, try_slab);
+  }
+  if (held) recent_.swap(giving_);
+  return held;
 }
 
 }  // namespace cslice

@@ -74,10 +74,12 @@ class BlockedProof {
   };
   // The grid cells a box overlaps, clamped to the grid.
   CellRange cells(const Box& b) const;
-  void add_slabs(const std::vector<ContactSegment>& segments, const PairRegions& regions,
-                 double margin);
-  void index_slabs(const std::vector<ContactSegment>& segments);
-  void order_targets(const std::vector<ContactSegment>& segments);
+  void collect(const std::vector<ContactSegment>& segments, const PairRegions& regions,
+               double margin);
+  size_t walk_index(Vec2 p) const;
+  void order_by_depth();
+  void index_slabs();
+  void order_targets();
   bool covered(Vec2 from, Vec2 to, int id);  // a line target
   bool covered_arc(const ArcTarget& arc, int halvings);
   template <class Stop>
@@ -90,8 +92,10 @@ class BlockedProof {
   std::vector<int> cell_start_, cell_slabs_, fill_;
   std::vector<Box> cell_boxes_;
   std::vector<CellRange> slab_cells_;  // per slab: the cells its box overlaps
-  std::vector<size_t> target_cells_;   // per target, in order: its cell
-  std::vector<int> near_;              // any_slab_near: the slabs in one cell whose boxes overlap
+  std::vector<int> by_depth_;          // the slabs, deepest first (order_by_depth)
+  std::vector<int> depth_start_, depth_class_;
+  std::vector<size_t> target_cells_;  // per target, in contact segment order: its cell
+  std::vector<int> near_;             // any_slab_near: the slabs in one cell whose boxes overlap
   std::vector<int> stamp_;  // per slab: the last query (a target, or a piece of an arc) to test it
   int query_ = -1;
   // The targets, by the cell of their box's centre, with a line's ends: read in this order,
@@ -101,13 +105,18 @@ class BlockedProof {
     int id;
     bool line;
   };
+  std::vector<Target> unordered_;    // the targets in contact segment order
+  std::vector<Vec2> target_points_;  // their boxes' centres, alongside
+  Box all_;                          // every target and slab
   std::vector<int> target_start_;
   std::vector<Target> targets_;
   std::vector<Span> spans_;  // on the target in hand: the spans found so far, merged
   Vec2 origin_;
   double cell_ = 1.0, per_cell_ = 1.0;
   int columns_ = 0, rows_ = 0;
-  int hint_ = -1;  // the slab that covered the last target covered by one slab
+  int hint_ = -1;            // the slab that held the last arc target (or piece) held by one slab
+  std::vector<int> recent_;  // the slabs that gave spans to the last line target proven
+  std::vector<int> giving_;  // the same for the line target in hand
 };
 
 }  // namespace cslice
