@@ -337,7 +337,8 @@ bool holds_arc(const Slab& s, const ArcTarget& arc) {
 }  // namespace
 
 // Slabs whose boxes are checked before the first of them is tested: 8 to 32 take 12% off
-// rough stars of 1,000 vertices a side against a whole cell at once, and are even at 300.
+// the proof on rough stars of 1,000 vertices a side, against a whole cell at once, and are
+// even at 300.
 constexpr int kSlabsPerBatch = 16;
 
 // Calls stop(j) once for each slab j whose box overlaps b and whose stamp is not the
