@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "geometry/clip.hpp"
+#include "slice/group_by.hpp"
 
 namespace cslice {
 namespace {
@@ -238,16 +239,10 @@ void BlockedProof::order_by_depth() {
   double deepest = 0.0;
   for (const Slab& s : slabs_) deepest = std::max(deepest, s.high);
   const double per_class = deepest > 0.0 ? (kDepthClasses - 1) / deepest : 0.0;
-  depth_start_.assign(kDepthClasses + 1, 0);
-  depth_class_.resize(slabs_.size());
-  for (size_t k = 0; k < slabs_.size(); ++k) {
-    const int c = kDepthClasses - 1 - int(slabs_[k].high * per_class);
-    ++depth_start_[size_t(depth_class_[k] = c) + 1];
-  }
-  for (size_t c = 1; c < depth_start_.size(); ++c) depth_start_[c] += depth_start_[c - 1];
-  by_depth_.resize(slabs_.size());
-  for (size_t k = 0; k < slabs_.size(); ++k)
-    by_depth_[size_t(depth_start_[size_t(depth_class_[k])]++)] = int(k);
+  group_by(
+      slabs_.size(), kDepthClasses,
+      [&](size_t k) { return size_t(kDepthClasses - 1 - int(slabs_[k].high * per_class)); },
+      group_start_, by_depth_, group_fill_);
 }
 
 // A uniform grid of cells about as wide as the average slab, each listing the slabs whose
@@ -306,14 +301,13 @@ size_t BlockedProof::walk_index(Vec2 p) const {
 // and the slabs that covered one are tried first on the next.
 void BlockedProof::order_targets() {
   const size_t n = unordered_.size();
-  target_start_.assign(size_t(columns_) * size_t(rows_) + 1, 0);
   target_cells_.resize(n);
-  for (size_t k = 0; k < n; ++k)
-    ++target_start_[(target_cells_[k] = walk_index(target_points_[k])) + 1];
-  for (size_t c = 1; c < target_start_.size(); ++c) target_start_[c] += target_start_[c - 1];
+  for (size_t k = 0; k < n; ++k) target_cells_[k] = walk_index(target_points_[k]);
+  group_by(
+      n, size_t(columns_) * size_t(rows_), [&](size_t k) { return target_cells_[k]; }, group_start_,
+      target_order_, group_fill_);
   targets_.resize(n);
-  for (size_t k = 0; k < n; ++k)
-    targets_[size_t(target_start_[target_cells_[k]]++)] = unordered_[k];
+  for (size_t i = 0; i < n; ++i) targets_[i] = unordered_[size_t(target_order_[i])];
 }
 
 namespace {

@@ -91,11 +91,11 @@ class BlockedProof {
   // cell_slabs_[cell_start_[c] .. cell_start_[c + 1]), with their boxes alongside.
   std::vector<int> cell_start_, cell_slabs_, fill_;
   std::vector<Box> cell_boxes_;
-  std::vector<CellRange> slab_cells_;  // per slab: the cells its box overlaps
-  std::vector<int> by_depth_;          // the slabs, deepest first (order_by_depth)
-  std::vector<int> depth_start_, depth_class_;
-  std::vector<size_t> target_cells_;  // per target, in contact segment order: its cell
-  std::vector<int> near_;             // any_slab_near: the slabs in one cell whose boxes overlap
+  std::vector<CellRange> slab_cells_;          // per slab: the cells its box overlaps
+  std::vector<int> by_depth_;                  // the slabs, deepest first (order_by_depth)
+  std::vector<int> group_start_, group_fill_;  // group_by's buffers, for either ordering
+  std::vector<size_t> target_cells_;           // per target, in contact segment order: its cell
+  std::vector<int> near_;   // any_slab_near: the slabs in one cell whose boxes overlap
   std::vector<int> stamp_;  // per slab: the last query (a target, or a piece of an arc) to test it
   int query_ = -1;
   // The targets, by the cell of their box's centre, with a line's ends: read in this order,
@@ -108,7 +108,7 @@ class BlockedProof {
   std::vector<Target> unordered_;    // the targets in contact segment order
   std::vector<Vec2> target_points_;  // their boxes' centres, alongside
   Box all_;                          // every target and slab
-  std::vector<int> target_start_;
+  std::vector<int> target_order_;    // order_targets: the targets' indices in walk order
   std::vector<Target> targets_;
   std::vector<Span> spans_;  // on the target in hand: the spans found so far, merged
   Vec2 origin_;
