@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 #include <string>
 #include <vector>
@@ -24,6 +25,19 @@
 using namespace cslice;
 
 namespace {
+
+// Curve i as contact segment i, for arrangements built from curves alone.
+std::vector<int> own_ids(const std::vector<Curve>& curves) {
+  std::vector<int> ids(curves.size());
+  std::iota(ids.begin(), ids.end(), 0);
+  return ids;
+}
+
+Tolerances with_geometric(double eps) {
+  Tolerances tol;
+  tol.geometric = eps;
+  return tol;
+}
 
 // Every moving feature against every fixed one, in feature order: what ContactMaker finds
 // through its index, pair by pair, with nothing precomputed.
@@ -121,8 +135,7 @@ TEST(SliceFastPaths, EqualPointsStillJoinNearOnes) {
   const Vec2 p = o + Vec2{0.5e-6, 0.0}, q = o + Vec2{1.3e-6, 0.0};
   curves.push_back(make_segment(p, {1.5, 5.0}));
   curves.push_back(make_segment(q, {4.0, 2.5}));
-  std::vector<int> ids(curves.size());
-  for (size_t i = 0; i < ids.size(); ++i) ids[i] = int(i);
+  std::vector<int> ids = own_ids(curves);
   ArrangementBuilder builder;
   const Arrangement& arr = builder.build(curves, ids, tol);
   int near_o = 0;
@@ -157,10 +170,8 @@ TEST(SliceFastPaths, EndToEndTouchesAddNoSplitPoints) {
   EXPECT_EQ(splits[2 * chain.size()].met, 4);
   EXPECT_EQ(splits[2 * chain.size() + 1].met, 0);
 
-  std::vector<int> ids(chain.size());
-  for (size_t i = 0; i < ids.size(); ++i) ids[i] = int(i);
-  Tolerances tol;
-  tol.geometric = eps;
+  std::vector<int> ids = own_ids(chain);
+  const Tolerances tol = with_geometric(eps);
   ArrangementBuilder builder;
   const Arrangement& arr = builder.build(chain, ids, tol);
   EXPECT_EQ(arr.vertices.size(), 7u);  // 4 corners, the crossing, the stick's 2 ends
@@ -226,10 +237,8 @@ TEST(SliceFastPaths, DanglingEdgesArePeeledOffTheSlicesArrangement) {
   curves.push_back(make_segment({6, 4}, {8, 2}));
   curves.push_back(make_segment({12, 0}, {13, 0}));  // a sliding fit: 1 edge
   curves.push_back(make_segment({13, 0}, {12, 0}));
-  std::vector<int> ids(curves.size());
-  for (size_t i = 0; i < ids.size(); ++i) ids[i] = int(i);
-  Tolerances tol;
-  tol.geometric = 1e-9;
+  std::vector<int> ids = own_ids(curves);
+  const Tolerances tol = with_geometric(1e-9);
   ArrangementBuilder builder;
   const Arrangement& all = builder.build(curves, ids, tol);
   EXPECT_EQ(all.edges.size(), 18u);
@@ -250,8 +259,43 @@ TEST(SliceFastPaths, DanglingEdgesArePeeledOffTheSlicesArrangement) {
   EXPECT_EQ(builder.build(curves, ids, tol).edges.size(), 20u);
 }
 
-// Slices with dangling edges peeled and kept are the same bit for bit, but for the blocked
-// area's last bits (each dangling edge adds and takes back its area term): contact segments,
+// Where two one-sided segments cross at a point nothing else passes through, the piece of
+// each that leaves the crossing into the other's blocked side (its left) has blocked faces
+// on both hands, and a slice's arrangement leaves it out (slice/edge_pieces.hpp): here a,
+// running right along y = 5, and b, running up along x = 5, inside a box they end on, lose
+// a's piece left of x = 5 and b's piece above y = 5. A third segment through their crossing
+// makes it no simple crossing, and every piece stays.
+TEST(SliceFastPaths, PiecesInsideASimpleCrossingAreLeftOut) {
+  std::vector<Curve> curves;
+  const std::vector<Vec2> box{{0, 0}, {0, 10}, {10, 10}, {10, 0}};
+  for (size_t i = 0; i < box.size(); ++i)
+    curves.push_back(make_segment(box[i], box[(i + 1) % box.size()]));
+  curves.push_back(make_segment({0, 5}, {10, 5}));  // a
+  curves.push_back(make_segment({5, 0}, {5, 10}));  // b
+  std::vector<int> ids = own_ids(curves);
+  const Tolerances tol = with_geometric(1e-9);
+  ArrangementBuilder builder;
+  const Arrangement& all = builder.build(curves, ids, tol);
+  EXPECT_EQ(all.edges.size(), 12u);  // the box's 4 edges cut in two, a and b in two each
+  EXPECT_EQ(all.faces.size(), 5u);
+  const Arrangement& slice = builder.build(curves, ids, tol, nullptr, true);
+  ASSERT_EQ(slice.edges.size(), 10u);
+  EXPECT_EQ(slice.faces.size(), 3u);  // unbounded, the quarter right of b below a, the rest
+  for (const ArrangementEdge& e : slice.edges) {
+    const Vec2 mid = point_at(e.curve, 0.5);
+    const int segment = e.labels.front().segment;
+    EXPECT_TRUE(segment != 4 || mid.x > 5.0);  // a's right half stays
+    EXPECT_TRUE(segment != 5 || mid.y < 5.0);  // b's lower half stays
+  }
+  curves.push_back(make_segment({0, 0}, {10, 10}));  // through the crossing
+  ids.push_back(int(ids.size()));
+  EXPECT_EQ(builder.build(curves, ids, tol).edges.size(), 14u);
+  EXPECT_EQ(builder.build(curves, ids, tol, nullptr, true).edges.size(), 14u);
+}
+
+// Slices with dangling edges (and the pieces inside simple crossings) peeled and kept are the
+// same bit for bit, but for the blocked area's last bits (each dangling edge adds and takes
+// back its area term, and merged faces sum theirs in another order): contact segments,
 // realizable pieces, free components with their samples and boundaries, the contact graph and
 // degenerate contacts. On rough stars (a third of their edges dangle), random curved pairs,
 // designed pairs (perfect fits and sliding fits: vertices the peeling must stop at) and gears.

@@ -83,6 +83,8 @@ struct ArrangementBuilder::Scratch {
   std::vector<int> slots, distinct;  // merge_points' exactly equal points
   std::vector<size_t> used_slots;
   std::vector<int> order, vertex_of, vertex_of_root, fill;
+  std::vector<int> splits_at;              // per vertex: how many split points merged into it
+  std::vector<InsidePiece> inside_pieces;  // find_inside_pieces
   UnionFind uf;
   std::vector<int> start, along;
   std::vector<std::pair<double, int>> at_t;
@@ -251,8 +253,11 @@ void merge_points(Scratch& s, double eps, std::vector<Vec2>& vertices) {
   const size_t count = splits.size();  // read once: the stores below could alias it
   s.vertex_of.resize(count);
   s.vertex_of_root.assign(count, -1);
+  s.splits_at.resize(count);  // at most one vertex per split point
   int* vertex_of = s.vertex_of.data();
   int* vertex_of_root = s.vertex_of_root.data();
+  int* splits_at = s.splits_at.data();
+  std::memset(splits_at, 0, count * sizeof(int));
   for (size_t i = 0; i < count; ++i) {
     const int root = s.uf.find(int(i));
     if (vertex_of_root[root] < 0) {
@@ -260,6 +265,7 @@ void merge_points(Scratch& s, double eps, std::vector<Vec2>& vertices) {
       vertices.push_back(splits[root].p);
     }
     vertex_of[i] = vertex_of_root[root];
+    ++splits_at[vertex_of[i]];
   }
 }
 
@@ -274,9 +280,50 @@ Curve piece_of(const Curve& c, double t0, double t1, Vec2 from, Vec2 to, TrigMem
   return make_arc_between(c.center, c.radius, start, sweep, from, to);
 }
 
+// The pieces leaving simple crossings into the other curve's blocked side (edge_pieces.hpp:
+// two curves crossing at a vertex of no other split point; the crossing's pair of split
+// points was made one after the other), except at crossings at an angle within the angular
+// tolerance. The pieces come in curve order, each starting at its entry `at` of at_t (the
+// split points sorted along each curve, curve c's from start[c]).
+void find_inside_pieces(Scratch& s, const std::vector<Curve>& curves, const std::vector<int>& start,
+                        double angular_eps) {
+  const std::vector<SplitPoint>& splits = s.splits;
+  const std::vector<Piece>& pieces = s.pieces;
+  // The piece of split point i's curve that starts at i (ahead) or ends there.
+  auto piece_at = [&](size_t i, bool ahead) {
+    const int c = splits[i].curve;
+    int k = start[size_t(c)];
+    while (s.at_t[size_t(k)].second != int(i)) ++k;
+    if (!ahead) --k;
+    auto p = std::lower_bound(pieces.begin(), pieces.end(), c,
+                              [](const Piece& x, int curve) { return x.curve < curve; });
+    for (; p != pieces.end() && p->curve == c; ++p)
+      if (p->at == k) return int(p - pieces.begin());
+    return -1;
+  };
+  // The first 2 * curves are the curves' ends; meetings come in pairs from there.
+  for (size_t i = 2 * curves.size(); i + 1 < splits.size(); i += 2) {
+    const SplitPoint &a = splits[i], &b = splits[i + 1];
+    if (a.how != Meeting::crossing) continue;
+    const int vertex = s.vertex_of[i];
+    if (s.splits_at[size_t(vertex)] != 2 || s.vertex_of[i + 1] != vertex || b.curve != a.met)
+      continue;
+    // Sine of the angle from b's tangent to a's: a leaving forward lies on b's left when > 0,
+    // and b arriving on a's left; the other way round when < 0.
+    const double turn =
+        cross(tangent_at(curves[size_t(b.curve)], b.t), tangent_at(curves[size_t(a.curve)], a.t));
+    if (std::fabs(turn) <= angular_eps) continue;
+    const int ahead = piece_at(turn > 0.0 ? i : i + 1, true);
+    const int behind = piece_at(turn > 0.0 ? i + 1 : i, false);
+    if (ahead >= 0) s.inside_pieces.push_back({ahead, vertex});
+    if (behind >= 0) s.inside_pieces.push_back({behind, vertex});
+  }
+}
+
 // The pieces of the curves between their split points, made into edges (edge_pieces.hpp).
 void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
-                 const std::vector<int>& ids, double eps, TrigMemo* trig, bool peel) {
+                 const std::vector<int>& ids, double eps, double angular_eps, TrigMemo* trig,
+                 bool peel) {
   const std::vector<SplitPoint>& splits = s.splits;
   const std::vector<int>& vertex_of = s.vertex_of;
   // Split points along each curve in order of (t, index): grouped by curve, then each
@@ -332,6 +379,8 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
       pieces.push_back({vertex_of[a], vertex_of[b], ids[c], int(c), k});
     }
   }
+  s.inside_pieces.clear();
+  if (peel) find_inside_pieces(s, curves, start, angular_eps);
   auto curve_of = [&](const Piece& p) {
     return piece_of(curves[p.curve], at_t[p.at].first, at_t[p.at + 1].first, arr.vertices[p.u],
                     arr.vertices[p.v], trig);
@@ -343,8 +392,8 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
                            on[p.at].tangent, on[p.at + 1].tangent, on[p.at].point,
                            on[p.at + 1].point);
   };
-  edges_from_pieces(pieces, arr.vertices.size(), eps, peel, curve_of, emit, s.edge_pieces,
-                    arr.edges);
+  edges_from_pieces(pieces, arr.vertices.size(), eps, peel, s.inside_pieces, curve_of, emit,
+                    s.edge_pieces, arr.edges);
 }
 
 // The half-edges grouped by origin, as group_by(2 * edges, vertices, origin) groups them
@@ -712,7 +761,7 @@ const Arrangement& ArrangementBuilder::build(const std::vector<Curve>& curves,
   arr.cycle_half_edges.clear();
   split_points(curves, tol.geometric, s.split, s.splits);
   merge_points(s, tol.geometric, arr.vertices);
-  build_edges(arr, s, curves, segment_ids, tol.geometric, trig, peel_dangling_edges);
+  build_edges(arr, s, curves, segment_ids, tol.geometric, tol.angular, trig, peel_dangling_edges);
   collect_meetings(s, curves.size());
   order_outgoing(arr, s, tol.geometric, tol.angular);
   link_half_edges(arr, s);

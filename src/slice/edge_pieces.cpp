@@ -117,11 +117,34 @@ void survey(const std::vector<Piece>& pieces, size_t vertices, PieceScratch& s) 
   }
 }
 
-// Peels edges from the simple leaves inward (peeled[k] = 1), as long as they are one-sided
-// and lead to a simple vertex.
-void peel_dangling(const std::vector<Piece>& pieces, size_t vertices, PieceScratch& s) {
+// Whether the edge of inside piece x is that piece alone, one-sided, between simple vertices,
+// and its crossing still has degree 4: both its faces are blocked.
+bool still_inside(const std::vector<Piece>& pieces, const PieceScratch& s, InsidePiece x) {
+  const size_t k = size_t(s.edge_of[size_t(x.piece)]);
+  const Piece& p = pieces[size_t(x.piece)];
+  return s.first[k] == x.piece && s.one_sided[k] && p.u != p.v && s.degree[size_t(x.vertex)] == 4 &&
+         s.simple[size_t(p.u)] && s.simple[size_t(p.v)];
+}
+
+// Takes out the edges inside a crossing (decided on the degrees before any goes), then peels
+// edges from the simple leaves inward (peeled[k] = 1), as long as they are one-sided and
+// lead to a simple vertex.
+void peel_dangling(const std::vector<Piece>& pieces, size_t vertices,
+                   const std::vector<InsidePiece>& inside, PieceScratch& s) {
   survey(pieces, vertices, s);
   s.peeled.assign(s.first.size(), 0);
+  s.going.clear();
+  for (const InsidePiece x : inside)
+    if (still_inside(pieces, s, x)) s.going.push_back(s.edge_of[size_t(x.piece)]);
+  for (const int k : s.going) {
+    if (s.peeled[size_t(k)]) continue;  // inside at both its ends
+    s.peeled[size_t(k)] = 1;
+    const auto [u, v] = s.end_pairs[size_t(s.first[size_t(k)])];
+    --s.degree[size_t(u)];
+    --s.degree[size_t(v)];
+    s.edge_xor[size_t(u)] ^= k;
+    s.edge_xor[size_t(v)] ^= k;
+  }
   s.leaves.clear();
   for (size_t v = 0; v < vertices; ++v)
     if (s.degree[v] == 1 && s.simple[v]) s.leaves.push_back(int(v));
@@ -149,12 +172,13 @@ bool slice_peeling() {
 }
 
 void edges_from_pieces(const std::vector<Piece>& pieces, size_t vertices, double eps, bool peel,
+                       const std::vector<InsidePiece>& inside,
                        const std::function<Curve(const Piece&)>& curve_of,
                        const std::function<void(const Piece&)>& emit, PieceScratch& s,
                        std::vector<ArrangementEdge>& edges) {
   order_by_ends(pieces, vertices, s);
   assign_edges(pieces, eps, curve_of, s);
-  if (peel) peel_dangling(pieces, vertices, s);
+  if (peel) peel_dangling(pieces, vertices, inside, s);
   const size_t count = s.first.size();
   s.index.resize(count);
   edges.reserve(edges.size() + count);
