@@ -6,8 +6,8 @@
 #include <optional>
 #include <tuple>
 
-#include "criticals/bucket_sort.hpp"
 #include "geometry/box_pairs.hpp"
+#include "slice/small_sort.hpp"
 
 namespace cslice {
 

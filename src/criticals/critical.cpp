@@ -27,13 +27,13 @@
 #include <memory>
 #include <optional>
 
-#include "criticals/bucket_sort.hpp"
 #include "criticals/candidates.hpp"
 #include "criticals/events.hpp"
 #include "criticals/symmetric.hpp"
 #include "cslice/classify.hpp"
 #include "cslice/critical.hpp"
 #include "parallel/arena.hpp"
+#include "slice/small_sort.hpp"
 
 namespace cslice {
 

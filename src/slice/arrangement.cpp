@@ -76,6 +76,7 @@ struct ArrangementBuilder::Scratch {
   SplitScratch split;
   std::vector<SplitPoint> splits;
   std::vector<std::pair<double, int>> by_x;
+  BucketSortBuffers<std::pair<double, int>> by_x_buffers;
   std::vector<uint64_t> keys;
   std::vector<int> next, count;
   std::vector<Vec2> points_by_x;
@@ -84,6 +85,7 @@ struct ArrangementBuilder::Scratch {
   std::vector<size_t> used_slots;
   std::vector<int> order, vertex_of, vertex_of_root, fill;
   std::vector<int> splits_at;              // per vertex: how many split points merged into it
+  std::vector<int> piece_from, piece_to;   // per split point: build_edges' pieces from and to it
   std::vector<InsidePiece> inside_pieces;  // find_inside_pieces
   UnionFind uf;
   std::vector<int> start, along;
@@ -168,8 +170,9 @@ void join_equal_points(const std::vector<SplitPoint>& splits, Scratch& s, UnionF
 }
 
 // The distinct split points sorted by x (s.order: their indices, s.points_by_x: where they
-// are): below a few thousand a comparison sort, above, where that costs more, an LSD radix
-// sort on the bits of x (made unsigned-comparable). Points of equal x come in any order.
+// are): below a few thousand a bucket sort by x (small_sort.hpp: buckets by where x lies in
+// its range, each sorted after), above, where that costs more, an LSD radix sort on the
+// bits of x (made unsigned-comparable). Points of equal x come in any order.
 void sort_points_by_x(const std::vector<SplitPoint>& splits, Scratch& s) {
   const std::vector<int>& distinct = s.distinct;
   const size_t n = distinct.size();
@@ -180,10 +183,8 @@ void sort_points_by_x(const std::vector<SplitPoint>& splits, Scratch& s) {
   if (n < 4096) {  // the radix passes only pay off on many points
     s.by_x.resize(n);
     for (size_t i = 0; i < n; ++i) s.by_x[i] = {splits[distinct[i]].p.x, distinct[i]};
-    sort_by_runs(s.by_x.begin(), s.by_x.end(),
-                 [](const std::pair<double, int>& a, const std::pair<double, int>& b) {
-                   return a.first < b.first;
-                 });
+    sort_by_coordinate(
+        s.by_x, [](const std::pair<double, int>& a) { return a.first; }, s.by_x_buffers);
     for (size_t i = 0; i < n; ++i) {
       order[i] = s.by_x[i].second;
       points[i] = splits[order[i]].p;
@@ -283,23 +284,18 @@ Curve piece_of(const Curve& c, double t0, double t1, Vec2 from, Vec2 to, TrigMem
 // The pieces leaving simple crossings into the other curve's blocked side (edge_pieces.hpp:
 // two curves crossing at a vertex of no other split point; the crossing's pair of split
 // points was made one after the other), except at crossings at an angle within the angular
-// tolerance. The pieces come in curve order, each starting at its entry `at` of at_t (the
-// split points sorted along each curve, curve c's from start[c]).
-void find_inside_pieces(Scratch& s, const std::vector<Curve>& curves, const std::vector<int>& start,
-                        double angular_eps) {
+// tolerance. s.piece_from[i] and s.piece_to[i] name the pieces starting and ending at split
+// point i, when they are pieces that do (stale entries are told by their ends).
+void find_inside_pieces(Scratch& s, const std::vector<Curve>& curves, double angular_eps) {
   const std::vector<SplitPoint>& splits = s.splits;
   const std::vector<Piece>& pieces = s.pieces;
-  // The piece of split point i's curve that starts at i (ahead) or ends there.
-  auto piece_at = [&](size_t i, bool ahead) {
-    const int c = splits[i].curve;
-    int k = start[size_t(c)];
-    while (s.at_t[size_t(k)].second != int(i)) ++k;
-    if (!ahead) --k;
-    auto p = std::lower_bound(pieces.begin(), pieces.end(), c,
-                              [](const Piece& x, int curve) { return x.curve < curve; });
-    for (; p != pieces.end() && p->curve == c; ++p)
-      if (p->at == k) return int(p - pieces.begin());
-    return -1;
+  auto from = [&](size_t i) {
+    const size_t p = size_t(s.piece_from[i]);
+    return p < pieces.size() && s.at_t[size_t(pieces[p].at)].second == int(i) ? int(p) : -1;
+  };
+  auto to = [&](size_t i) {
+    const size_t p = size_t(s.piece_to[i]);
+    return p < pieces.size() && s.at_t[size_t(pieces[p].at) + 1].second == int(i) ? int(p) : -1;
   };
   // The first 2 * curves are the curves' ends; meetings come in pairs from there.
   for (size_t i = 2 * curves.size(); i + 1 < splits.size(); i += 2) {
@@ -308,15 +304,16 @@ void find_inside_pieces(Scratch& s, const std::vector<Curve>& curves, const std:
     const int vertex = s.vertex_of[i];
     if (s.splits_at[size_t(vertex)] != 2 || s.vertex_of[i + 1] != vertex || b.curve != a.met)
       continue;
-    // Sine of the angle from b's tangent to a's: a leaving forward lies on b's left when > 0,
-    // and b arriving on a's left; the other way round when < 0.
-    const double turn =
-        cross(tangent_at(curves[size_t(b.curve)], b.t), tangent_at(curves[size_t(a.curve)], a.t));
+    const int a_ahead = from(i), a_behind = to(i), b_ahead = from(i + 1), b_behind = to(i + 1);
+    if (a_ahead < 0 || a_behind < 0 || b_ahead < 0 || b_behind < 0) continue;
+    // Sine of the angle from b's tangent to a's (where the pieces start, as the vertex's
+    // order of directions takes them): a leaving forward lies on b's left when > 0, and b
+    // arriving on a's left; the other way round when < 0.
+    const double turn = cross(s.on_curve[size_t(pieces[size_t(b_ahead)].at)].tangent,
+                              s.on_curve[size_t(pieces[size_t(a_ahead)].at)].tangent);
     if (std::fabs(turn) <= angular_eps) continue;
-    const int ahead = piece_at(turn > 0.0 ? i : i + 1, true);
-    const int behind = piece_at(turn > 0.0 ? i + 1 : i, false);
-    if (ahead >= 0) s.inside_pieces.push_back({ahead, vertex});
-    if (behind >= 0) s.inside_pieces.push_back({behind, vertex});
+    s.inside_pieces.push_back({turn > 0.0 ? a_ahead : b_ahead, vertex});
+    s.inside_pieces.push_back({turn > 0.0 ? b_behind : a_behind, vertex});
   }
 }
 
@@ -361,6 +358,10 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
   };
   std::vector<Piece>& pieces = s.pieces;
   pieces.clear();
+  s.piece_from.resize(splits.size());  // not cleared: find_inside_pieces tells stale entries
+  s.piece_to.resize(splits.size());
+  int* piece_from = s.piece_from.data();
+  int* piece_to = s.piece_to.data();
   std::vector<Scratch::OnCurve>& on = s.on_curve;  // per entry of at_t that starts or ends a piece
   on.resize(count);
   for (size_t c = 0; c < curves.size(); ++c) {
@@ -376,11 +377,12 @@ void build_edges(Arrangement& arr, Scratch& s, const std::vector<Curve>& curves,
       if (known != k) on[k] = on_curve(curve, ta);
       on[k + 1] = on_curve(curve, tb);
       known = k + 1;
+      piece_from[a] = piece_to[b] = int(pieces.size());
       pieces.push_back({vertex_of[a], vertex_of[b], ids[c], int(c), k});
     }
   }
   s.inside_pieces.clear();
-  if (peel) find_inside_pieces(s, curves, start, angular_eps);
+  if (peel) find_inside_pieces(s, curves, angular_eps);
   auto curve_of = [&](const Piece& p) {
     return piece_of(curves[p.curve], at_t[p.at].first, at_t[p.at + 1].first, arr.vertices[p.u],
                     arr.vertices[p.v], trig);

@@ -63,8 +63,8 @@ void candidate_pairs(SplitScratch& s) {
   const std::vector<Box>& boxes = s.boxes;
   s.order.resize(boxes.size());
   std::iota(s.order.begin(), s.order.end(), 0);
-  sort_by_runs(s.order.begin(), s.order.end(),
-               [&](int a, int b) { return boxes[a].lo.x < boxes[b].lo.x; });
+  sort_by_coordinate(
+      s.order, [&](int a) { return boxes[a].lo.x; }, s.by_x);
   s.sorted.resize(boxes.size());  // contiguous for the sweep
   const size_t n = boxes.size();
   const Box* sorted = s.sorted.data();

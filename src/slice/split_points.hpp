@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cslice/geometry.hpp"
+#include "slice/small_sort.hpp"
 
 namespace cslice {
 
@@ -75,7 +76,8 @@ class ClosestPoints {
 // otherwise spend more in the allocator than in the geometry.
 struct SplitScratch {
   std::vector<Box> boxes;  // each curve's box grown by eps
-  std::vector<int> order;
+  std::vector<int> order;  // the curves by their boxes' left x
+  BucketSortBuffers<int> by_x;
   std::vector<Box> sorted;
   std::vector<std::pair<int, int>> pairs;
   std::vector<SharedPiece> shared;
