@@ -1,6 +1,7 @@
 // Slice::locate's shortcuts against the full tests they stand in for: within_distance
 // against distance_to_curve(c, p) <= eps (the box margin of segments, the arc's cheap
-// candidates), and locate itself against the plain loop over every piece.
+// candidates), carrier_rejects never against it, and locate itself against the plain loop
+// over every piece.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -34,10 +35,17 @@ std::vector<Vec2> probes(const Curve& c, double eps, std::mt19937& rng) {
   return out;
 }
 
-void expect_same_decisions(const Curve& c, double eps, std::mt19937& rng, int& near) {
+// Also: carrier_rejects never rejects a point within eps (`rejected` counts those it does).
+void expect_same_decisions(const Curve& c, double eps, std::mt19937& rng, int& near,
+                           int& rejected) {
   for (Vec2 p : probes(c, eps, rng)) {
     const bool exact = distance_to_curve(c, p) <= eps;
     near += exact;
+    const bool carrier_far = carrier_rejects(c, p, eps);
+    rejected += carrier_far;
+    ASSERT_FALSE(exact && carrier_far)
+        << "p " << p.x << ", " << p.y << " eps " << eps << " from " << c.from.x << ", " << c.from.y
+        << " to " << c.to.x << ", " << c.to.y << " sweep " << c.sweep;
     ASSERT_EQ(within_distance(c, p, eps), exact)
         << "p " << p.x << ", " << p.y << " eps " << eps << " from " << c.from.x << ", " << c.from.y
         << " to " << c.to.x << ", " << c.to.y << " sweep " << c.sweep;
@@ -50,22 +58,36 @@ void expect_same_decisions(const Curve& c, double eps, std::mt19937& rng, int& n
 TEST(SliceLocate, WithinDistanceMatchesDistanceFarFromOrigin) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  int near = 0;
+  int near = 0, rejected = 0;
   for (int k = 0; k < 400; ++k) {
     const Vec2 offset{1e7 * unit(rng), 1e7 * unit(rng)};
     const Vec2 a = offset + Vec2{unit(rng), unit(rng)};
     // Nearly axis-parallel segments: points beside them lie beyond their box in one axis.
     const Vec2 d = k % 2 ? Vec2{1e-7 * unit(rng), unit(rng)} : Vec2{unit(rng), 1e-7 * unit(rng)};
-    expect_same_decisions(make_segment(a, a + d), 1e-9, rng, near);
-    expect_same_decisions(make_bulge_arc(a, a + d, 0.3 * unit(rng)), 1e-9, rng, near);
+    expect_same_decisions(make_segment(a, a + d), 1e-9, rng, near, rejected);
+    expect_same_decisions(make_bulge_arc(a, a + d, 0.3 * unit(rng)), 1e-9, rng, near, rejected);
   }
   EXPECT_GT(near, 1000);  // the probes do straddle the threshold
+}
+
+// Near the origin, where round-off is far below eps: segments of every direction, the points
+// twice eps off their line rejected, none within eps.
+TEST(SliceLocate, CarrierRejectsNoPointWithinDistanceOfASegment) {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int near = 0, rejected = 0;
+  for (int k = 0; k < 400; ++k) {
+    const Vec2 a{unit(rng), unit(rng)}, d{unit(rng), unit(rng)};
+    expect_same_decisions(make_segment(a, a + d), 1e-9, rng, near, rejected);
+  }
+  EXPECT_GT(near, 1000);
+  EXPECT_GT(rejected, 10000);
 }
 
 TEST(SliceLocate, WithinDistanceMatchesDistanceOnArcs) {
   std::mt19937 rng(12);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  int near = 0;
+  int near = 0, rejected = 0;
   for (int k = 0; k < 400; ++k) {
     const Vec2 center{unit(rng), unit(rng)};
     const double radius = 0.01 + std::fabs(unit(rng));
@@ -74,8 +96,9 @@ TEST(SliceLocate, WithinDistanceMatchesDistanceOnArcs) {
     const double eps = 1e-9;
     arc.from = arc.from + Vec2{eps * unit(rng), eps * unit(rng)};
     arc.to = arc.to + Vec2{eps * unit(rng), eps * unit(rng)};
-    expect_same_decisions(arc, eps, rng, near);
+    expect_same_decisions(arc, eps, rng, near, rejected);
   }
+  EXPECT_GT(rejected, 10000);  // twice eps off the circle, and beyond
   EXPECT_GT(near, 1000);
 }
 

@@ -58,6 +58,31 @@ bool segment_box_rejects(const Curve& c, Vec2 p, double eps) {
          std::min(a.y, b.y) - p.y > limit || p.y - std::max(a.y, b.y) > limit;
 }
 
+// A segment's line distance as computed here, |cross(d, r)| / |d|, is off the exact one by
+// a few u times the coordinates' size S (u = DBL_EPSILON / 2: the differences d and r are
+// rounded on the coordinates' scale, the products relatively), and distance_to_curve's by as
+// little: a margin of 16u (eps + S) over eps covers both, as in segment_box_rejects, whose
+// bound on eps (no underflow in the squares) holds here too. An arc needs no margin: its
+// test is within_distance's, the very values distance_to_curve chooses from.
+bool carrier_rejects(const Curve& c, Vec2 p, double eps) {
+  constexpr double kMargin = 8.0 * std::numeric_limits<double>::epsilon();  // 16u
+  constexpr double kSmallestEps = 0x1p-500;
+  if (!(eps >= kSmallestEps)) return false;
+  if (c.is_segment()) {
+    const Vec2 d = c.to - c.from, r = p - c.from;
+    const double scale = std::fabs(p.x) + std::fabs(p.y) + std::fabs(c.from.x) +
+                         std::fabs(c.from.y) + std::fabs(c.to.x) + std::fabs(c.to.y);
+    const double limit = eps + kMargin * (eps + scale);
+    const double across = cross(d, r);  // |d| times the distance from the line
+    return across * across > limit * limit * length_squared(d);  // NaN: not rejected
+  }
+  // An arc's ends may lie off its circle (snapped to vertices), and near them the nearest
+  // end decides: both computed as distance_to_curve computes them (see within_distance).
+  const double rho = length(p - c.center);
+  return rho != 0.0 && std::fabs(rho - c.radius) > eps &&
+         std::min(distance(p, c.from), distance(p, c.to)) > eps;
+}
+
 // distance_to_curve returns one of the values computed here (on an arc: |rho - r| when p's
 // angle is on the arc, else the nearer end's distance, or r when rho is 0, which is |rho - r|
 // too), by the same expressions: when all of them exceed eps, so does the one it returns,

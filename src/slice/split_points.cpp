@@ -5,6 +5,7 @@
 #include <bit>
 #include <numeric>
 
+#include "geometry/near_curve.hpp"
 #include "slice/small_sort.hpp"
 
 namespace cslice {
@@ -180,7 +181,9 @@ class Sharer {
   // both), and those within eps of a point `to` has (they would join its vertex anyway).
   // Measured from the curve's own point, so that a vertex carried onto a curve passes on to
   // the curves that one runs beside. Outside the other's box grown by eps is farther than
-  // eps from it. (Their t lies in [0, 1], the whole range a near piece spans.)
+  // eps from it, as is a point clearly off its line or circle (carrier_rejects: most of the
+  // points of curves crossing at an angle). (Their t lies in [0, 1], the whole range a near
+  // piece spans.)
   void copy_near(int from, int to) {
     const Box& box = s_.boxes[to];
     const Curve& other = curves_[to];
@@ -194,7 +197,9 @@ class Sharer {
       }
       const Vec2 q = p.on_curve;
       if (q.x < box.lo.x || q.x > box.hi.x || q.y < box.lo.y || q.y > box.hi.y) continue;
-      if (has_point_near(to, p.p) || distance_to_curve(other, q) > eps_) continue;
+      if (carrier_rejects(other, q, eps_) || has_point_near(to, p.p) ||
+          distance_to_curve(other, q) > eps_)
+        continue;
       add(to, p.p);
     }
   }
