@@ -303,18 +303,23 @@ TEST(BlockedProof, ArcsAreHeldWholeOrByPieces) {
   EXPECT_TRUE(proven[7]);
 }
 
-// The automatic mode looks only where there are more than two contact segments per feature:
-// the rough star of 300 vertices per part, not the one of 100 (1.8 per feature).
-TEST(BlockedProof, LooksWhereSegmentsOutnumberFeaturesTwoToOne) {
-  const Pair rough = rough_star_pair(100, 400);
-  const size_t features = size_t(rough.moving.feature_count() + rough.fixed.feature_count());
-  EXPECT_TRUE(worth_proving(rough, 2 * features + 1));
-  EXPECT_FALSE(worth_proving(rough, 2 * features));
+// The automatic mode looks only where contact segments outnumber features: more than 4.5 to 1
+// on polygon pairs (the rough star of 500 vertices per part, 7.9 per feature, not that of
+// 300, 4.05), more than 2 to 1 where the parts have arcs (a gear of 8 teeth, 3.3).
+TEST(BlockedProof, LooksWhereSegmentsOutnumberFeatures) {
+  auto features = [](const Pair& pair) {
+    return size_t(pair.moving.feature_count() + pair.fixed.feature_count());
+  };
+  const Pair rough = rough_star_pair(300, 400);
+  EXPECT_TRUE(worth_proving(rough, 9 * features(rough) / 2 + 1));
+  EXPECT_FALSE(worth_proving(rough, 9 * features(rough) / 2));
   EXPECT_FALSE(worth_proving(rough, contact_segments(rough, 0.7).size()));
-  const Pair rougher = rough_star_pair(300, 400);
-  const size_t more = size_t(rougher.moving.feature_count() + rougher.fixed.feature_count());
+  const Pair rougher = rough_star_pair(500, 400);
   EXPECT_TRUE(worth_proving(rougher, contact_segments(rougher, 0.7).size()));
-  EXPECT_GT(contact_segments(rougher, 0.7).size(), 2 * more);
+  const Pair gear = testkit::gear_pair(8);
+  EXPECT_TRUE(worth_proving(gear, 2 * features(gear) + 1));
+  EXPECT_FALSE(worth_proving(gear, 2 * features(gear)));
+  EXPECT_TRUE(worth_proving(gear, contact_segments(gear, 0.7).size()));
 }
 
 // The contact segments proven do not depend on the order the search meets the slabs in

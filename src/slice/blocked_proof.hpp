@@ -28,7 +28,8 @@
 namespace cslice {
 
 // Whether the slice looks for contact segments proven blocked: when there are more than two
-// contact segments per feature of the pair (see docs/performance.md, sixteenth session).
+// contact segments per feature of the pair, or 4.5 when the parts have no arcs (see
+// blocked_proof.cpp and docs/performance.md).
 bool worth_proving(const Pair& pair, size_t contact_segments);
 
 // For tests: look always, never, or when worth_proving says (the default). Process-wide.

@@ -18,7 +18,7 @@
 //                                       moved by (X, -X / 2): a drawing far from its origin
 //   --prove-blocked always|never        slices leave out contact segments proven blocked
 //                                       always, or never (slice/blocked_proof.hpp), instead
-//                                       of only where segments outnumber features 2 to 1
+//                                       of only where segments outnumber features (worth_proving)
 //
 // Each pair goes through the checks the tests make on a few: the completeness of its
 // critical orientations (tests/support/completeness.hpp), its slices at random and at critical
