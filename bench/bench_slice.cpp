@@ -12,6 +12,7 @@
 //   BM_CgalStar/<n>             CGAL::minkowski_sum_by_reduced_convolution_2 (exact
 //                               kernel) of the same pairs: fixed + moving turned and reflected
 //   BM_SliceRoughStar/<n>       rough stars (independent radius noise): k grows like n^2
+//   BM_SlicerRoughStar/<n>      the same by a Slicer made once, as BM_SlicerStar
 //   BM_SliceRoughStarUnproven/<n>  the same with no contact segment proven blocked
 //                               (slice/blocked_proof.hpp): what the proof saves
 //   BM_CgalRoughStar/<n>        CGAL on those
@@ -151,14 +152,19 @@ void BM_SliceStar(benchmark::State& state) {
 // The same star slice by a Slicer made outside the timed loop: the pair's contact data
 // (contact features, the index of fixed normals) are then built once, as for every slice of
 // a sliced space; compute_slice builds them per call.
-void BM_SlicerStar(benchmark::State& state) {
-  const cslice::Pair& pair = star_pair(Shape::smooth, int(state.range(0))).pair;
+void run_slicer_star(benchmark::State& state, const cslice::Pair& pair) {
   cslice::Slicer slicer(pair);
   for (auto _ : state) {
     const cslice::Slice slice = slicer.slice(kStarTheta);
     benchmark::DoNotOptimize(slice.blocked_area);
   }
   state.counters["features"] = features(pair);
+}
+void BM_SlicerStar(benchmark::State& state) {
+  run_slicer_star(state, star_pair(Shape::smooth, int(state.range(0))).pair);
+}
+void BM_SlicerRoughStar(benchmark::State& state) {
+  run_slicer_star(state, star_pair(Shape::rough, int(state.range(0))).pair);
 }
 void BM_SliceRoughStar(benchmark::State& state) {
   run_slice(state, star_pair(Shape::rough, int(state.range(0))).pair, kStarTheta);
@@ -239,6 +245,7 @@ BENCHMARK(BM_SliceRoughStar)
 // 5.8 million contact segments, 4 GB, seconds: one iteration.
 BENCHMARK(BM_SliceRoughStar)->Arg(10000)->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SliceRoughStarUnproven)->Arg(300)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SlicerRoughStar)->Arg(100)->Arg(300)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CgalRoughStar)->Arg(100)->Arg(300)->Unit(benchmark::kMillisecond);
 // 1.5, 8 and 23 s, 2 GB at 3,000; at 10,000 it would need about 19 GB (not run).
 BENCHMARK(BM_CgalRoughStar)
