@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <boost/sort/pdqsort/pdqsort.hpp>
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -102,7 +103,8 @@ void bucket_sort(std::vector<T>& items, size_t buckets, BucketOf bucket_of, Less
 
 // Sorts items by key(item), a coordinate spread over its range (not stably): bucket_sort into
 // one bucket per item by where the key lies between the least and the greatest, a monotone
-// map (each step rounds monotonically). With a NaN key, which has no bucket, sort_by_runs.
+// map (each step rounds monotonically). With a NaN or infinite key, which has no bucket,
+// sort_by_runs.
 template <class T, class Key>
 void sort_by_coordinate(std::vector<T>& items, Key key, BucketSortBuffers<T>& b) {
   const auto less = [&](const T& x, const T& y) { return key(x) < key(y); };
@@ -114,7 +116,8 @@ void sort_by_coordinate(std::vector<T>& items, Key key, BucketSortBuffers<T>& b)
     lo = std::min(lo, k);
     hi = std::max(hi, k);
   }
-  if (nan || items.size() < 2) return sort_by_runs(items.begin(), items.end(), less);
+  if (nan || !std::isfinite(lo) || !std::isfinite(hi) || items.size() < 2)
+    return sort_by_runs(items.begin(), items.end(), less);
   const size_t buckets = items.size();
   const double per_unit = hi > lo ? double(buckets) / (hi - lo) : 0.0, last = double(buckets - 1);
   const auto bucket_of = [&](const T& x) {
