@@ -112,7 +112,7 @@ class Sharer {
       : curves_(curves), s_(s), splits_(splits), eps_(eps) {}
 
   void run() {
-    if (s_.shared.empty()) return;
+    if (s_.shared.empty() && s_.end_to_end.empty()) return;
     s_.copied.clear();
     for (int i : s_.closest_hits) s_.copied.insert(splits_[i].curve, splits_[i].p);
     size_t first_new = 0;
@@ -137,10 +137,14 @@ class Sharer {
         p.located = false;
       }
       s_.added.clear();
+      for (const auto& [a, b] : s_.end_to_end) {
+        if (!(pass == 0 && only_ends(a))) copy_near(a, b);
+        if (!(pass == 0 && only_ends(b))) copy_near(b, a);
+      }
       for (const SharedPiece& sp : s_.shared) {
         if (sp.near) {
-          if (!(pass == 0 && sp.end_to_end && only_ends(sp.a))) copy_near(sp.a, sp.b);
-          if (!(pass == 0 && sp.end_to_end && only_ends(sp.b))) copy_near(sp.b, sp.a);
+          copy_near(sp.a, sp.b);
+          copy_near(sp.b, sp.a);
         } else {
           copy_inside(sp.a, sp.b, sp.a_lo, sp.a_hi);
           copy_inside(sp.b, sp.a, sp.b_lo, sp.b_hi);
@@ -223,6 +227,7 @@ void split_points(const std::vector<Curve>& curves, double eps, SplitScratch& s,
                   std::vector<SplitPoint>& splits) {
   splits.clear();
   s.shared.clear();
+  s.end_to_end.clear();
   s.closest_hits.clear();
   s.boxes.clear();
   s.grouped = SplitScratch::Grouped::none;
@@ -238,7 +243,7 @@ void split_points(const std::vector<Curve>& curves, double eps, SplitScratch& s,
     // apart add nothing.
     const SegmentPairShortcut shortcut = segment_pair_shortcut(curves[i], curves[j], eps);
     if (shortcut == SegmentPairShortcut::end_to_end) {
-      s.shared.push_back({i, j, 0.0, 1.0, 0.0, 1.0, true, true});
+      s.end_to_end.push_back({i, j});
       continue;
     }
     if (shortcut == SegmentPairShortcut::apart) continue;

@@ -37,12 +37,12 @@ struct SplitsByCurve {
 // Two curves that meet, and where they may run within eps of each other: a piece shared by
 // both (collinear or co-circular within eps), as parameter ranges, or, for curves meeting at
 // points, their whole ranges (near = true: only points within eps of the other count).
-// end_to_end: segment_pair_shortcut said they share an end and are not collinear.
+// Segments meeting end to end at an angle (segment_pair_shortcut), most pairs of a slice, are
+// kept apart as SplitScratch::end_to_end: near, and nothing else to say.
 struct SharedPiece {
   int a, b;
   double a_lo, a_hi, b_lo, b_hi;
   bool near = false;
-  bool end_to_end = false;
 };
 
 // A fresh split point in curve order, with where it is on its own curve once located.
@@ -81,6 +81,7 @@ struct SplitScratch {
   std::vector<Box> sorted;
   std::vector<std::pair<int, int>> pairs;
   std::vector<SharedPiece> shared;
+  std::vector<std::pair<int, int>> end_to_end;  // segments meeting end to end at an angle
   SplitsByCurve fresh, all;
   std::vector<FreshSplit> points;
   std::vector<SplitPoint> added;
