@@ -34,6 +34,27 @@ double distance_to_curve(const Curve& c, Vec2 p) {
   return std::min(distance(p, c.from), distance(p, c.to));
 }
 
+namespace {
+
+// The margin of the segment tests below over eps, per unit of eps plus the coordinates'
+// size: 16u (u = DBL_EPSILON / 2), and the least eps they take (no underflow in squares).
+constexpr double kRoundingMargin = 8.0 * std::numeric_limits<double>::epsilon();
+constexpr double kSmallestEps = 0x1p-500;
+
+// On an arc, the values distance_to_curve chooses from, by its very expressions: p's
+// distance from the centre, from the circle, and from the nearer end. When both of the last
+// two exceed eps (and rho is not 0), so does the one it returns.
+struct ArcReach {
+  double rho, radial, ends;
+  bool beyond(double eps) const { return rho != 0.0 && radial > eps && ends > eps; }
+};
+ArcReach arc_reach(const Curve& c, Vec2 p) {
+  const double rho = length(p - c.center);
+  return {rho, std::fabs(rho - c.radius), std::min(distance(p, c.from), distance(p, c.to))};
+}
+
+}  // namespace
+
 // A segment's computed distance is |p - q| for q = lerp(from, to, t) (or an end), and q lies
 // outside the ends' box by at most 4u(|a| + |b|) per axis (u = DBL_EPSILON / 2; a, b the
 // ends' coordinates on that axis): two roundings in t (b - a), one in the sum. The computed
@@ -47,12 +68,10 @@ double distance_to_curve(const Curve& c, Vec2 p) {
 // range (below 2^-1074) to stay under u eps: true for eps >= 2^-500 (the pair's geometric
 // epsilon is 1e-9 of its size); a smaller eps takes the exact path.
 bool segment_box_rejects(const Curve& c, Vec2 p, double eps) {
-  constexpr double kMargin = 8.0 * std::numeric_limits<double>::epsilon();  // 16u
-  constexpr double kSmallestEps = 0x1p-500;
   if (!(eps >= kSmallestEps)) return false;
   const Vec2 a = c.from, b = c.to;
   const double scale = std::fabs(a.x) + std::fabs(b.x) + std::fabs(a.y) + std::fabs(b.y);
-  const double limit = eps + kMargin * (eps + scale);
+  const double limit = eps + kRoundingMargin * (eps + scale);
   // NaN anywhere fails every comparison: not rejected, the exact path decides.
   return std::min(a.x, b.x) - p.x > limit || p.x - std::max(a.x, b.x) > limit ||
          std::min(a.y, b.y) - p.y > limit || p.y - std::max(a.y, b.y) > limit;
@@ -62,25 +81,21 @@ bool segment_box_rejects(const Curve& c, Vec2 p, double eps) {
 // a few u times the coordinates' size S (u = DBL_EPSILON / 2: the differences d and r are
 // rounded on the coordinates' scale, the products relatively), and distance_to_curve's by as
 // little: a margin of 16u (eps + S) over eps covers both, as in segment_box_rejects, whose
-// bound on eps (no underflow in the squares) holds here too. An arc needs no margin: its
-// test is within_distance's, the very values distance_to_curve chooses from.
+// bound on eps holds here too. An arc needs no margin: its test is within_distance's, on the
+// very values distance_to_curve chooses from (arc_reach).
 bool carrier_rejects(const Curve& c, Vec2 p, double eps) {
-  constexpr double kMargin = 8.0 * std::numeric_limits<double>::epsilon();  // 16u
-  constexpr double kSmallestEps = 0x1p-500;
   if (!(eps >= kSmallestEps)) return false;
   if (c.is_segment()) {
     const Vec2 d = c.to - c.from, r = p - c.from;
     const double scale = std::fabs(p.x) + std::fabs(p.y) + std::fabs(c.from.x) +
                          std::fabs(c.from.y) + std::fabs(c.to.x) + std::fabs(c.to.y);
-    const double limit = eps + kMargin * (eps + scale);
+    const double limit = eps + kRoundingMargin * (eps + scale);
     const double across = cross(d, r);  // |d| times the distance from the line
     return across * across > limit * limit * length_squared(d);  // NaN: not rejected
   }
   // An arc's ends may lie off its circle (snapped to vertices), and near them the nearest
-  // end decides: both computed as distance_to_curve computes them (see within_distance).
-  const double rho = length(p - c.center);
-  return rho != 0.0 && std::fabs(rho - c.radius) > eps &&
-         std::min(distance(p, c.from), distance(p, c.to)) > eps;
+  // end decides.
+  return arc_reach(c, p).beyond(eps);
 }
 
 // distance_to_curve returns one of the values computed here (on an arc: |rho - r| when p's
@@ -90,13 +105,10 @@ bool carrier_rejects(const Curve& c, Vec2 p, double eps) {
 // its box (segment_box_rejects), then measured.
 bool within_distance(const Curve& c, Vec2 p, double eps) {
   if (c.is_segment()) return !segment_box_rejects(c, p, eps) && distance_to_curve(c, p) <= eps;
-  const Vec2 r = p - c.center;
-  const double rho = length(r);
-  if (rho == 0.0) return c.radius <= eps;
-  const double radial = std::fabs(rho - c.radius);
-  const double ends = std::min(distance(p, c.from), distance(p, c.to));
-  if (radial > eps && ends > eps) return false;
-  return (on_arc(c, p) ? radial : ends) <= eps;
+  const ArcReach a = arc_reach(c, p);
+  if (a.rho == 0.0) return c.radius <= eps;
+  if (a.beyond(eps)) return false;
+  return (on_arc(c, p) ? a.radial : a.ends) <= eps;
 }
 
 // The same steps as closest_parameter and distance_to_curve, sharing the arc's angle.
